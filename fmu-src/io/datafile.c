@@ -1,0 +1,323 @@
+/* Plain-text key/value data files: see datafile.h. */
+#include "datafile.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_FILE_BYTES (4L * 1024L * 1024L)
+
+typedef struct {
+    char *key;
+    char *rest; /* text after the key, trimmed */
+    int line;
+    int used;
+} entry;
+
+struct hg_datafile {
+    char *path;
+    entry *entries;
+    size_t n;
+};
+
+static void fail(char *err, size_t errlen, const char *fmt, ...)
+{
+    va_list ap;
+    if (!err || errlen == 0) return;
+    va_start(ap, fmt);
+    vsnprintf(err, errlen, fmt, ap);
+    va_end(ap);
+}
+
+static char *dup_str(const char *s, size_t len)
+{
+    char *d = malloc(len + 1);
+    if (d) {
+        memcpy(d, s, len);
+        d[len] = '\0';
+    }
+    return d;
+}
+
+static char *read_whole_file(const char *path, long *size, char *err, size_t errlen)
+{
+    FILE *fp = fopen(path, "rb");
+    char *buf = NULL;
+    long len;
+    if (!fp) {
+        fail(err, errlen, "cannot open data file '%s': %s", path, strerror(errno));
+        return NULL;
+    }
+    if (fseek(fp, 0, SEEK_END) != 0 || (len = ftell(fp)) < 0 || fseek(fp, 0, SEEK_SET) != 0) {
+        fail(err, errlen, "cannot read data file '%s' (not a regular file?)", path);
+    } else if (len == 0) {
+        fail(err, errlen, "data file '%s' is empty", path);
+    } else if (len > MAX_FILE_BYTES) {
+        fail(err, errlen, "data file '%s' is %ld bytes, more than the limit of %ld", path, len,
+             MAX_FILE_BYTES);
+    } else if ((buf = malloc((size_t)len + 1)) == NULL) {
+        fail(err, errlen, "out of memory reading '%s'", path);
+    } else if (fread(buf, 1, (size_t)len, fp) != (size_t)len) {
+        fail(err, errlen, "short read on data file '%s'", path);
+        free(buf);
+        buf = NULL;
+    } else {
+        buf[len] = '\0';
+        *size = len;
+    }
+    fclose(fp);
+    return buf;
+}
+
+static char *trim(char *s)
+{
+    char *end;
+    while (*s && isspace((unsigned char)*s)) s++;
+    end = s + strlen(s);
+    while (end > s && isspace((unsigned char)end[-1])) *--end = '\0';
+    return s;
+}
+
+static int add_entry(hg_datafile *f, char *line, int line_no, char *err, size_t errlen)
+{
+    size_t klen = strcspn(line, " \t");
+    entry *grown;
+    size_t i;
+    for (i = 0; i < f->n; i++) {
+        if (strlen(f->entries[i].key) == klen && strncmp(f->entries[i].key, line, klen) == 0) {
+            fail(err, errlen, "%s, line %d: key '%.*s' repeats line %d", f->path, line_no,
+                 (int)klen, line, f->entries[i].line);
+            return -1;
+        }
+    }
+    grown = realloc(f->entries, (f->n + 1) * sizeof *grown);
+    if (!grown) {
+        fail(err, errlen, "out of memory reading '%s'", f->path);
+        return -1;
+    }
+    f->entries = grown;
+    grown[f->n].key = dup_str(line, klen);
+    grown[f->n].rest = dup_str(trim(line + klen), strlen(trim(line + klen)));
+    grown[f->n].line = line_no;
+    grown[f->n].used = 0;
+    f->n++;
+    if (!grown[f->n - 1].key || !grown[f->n - 1].rest) {
+        fail(err, errlen, "out of memory reading '%s'", f->path);
+        return -1;
+    }
+    return 0;
+}
+
+static int parse_header(const hg_datafile *f, char *line, int line_no, const char *magic,
+                        int version, char *err, size_t errlen)
+{
+    size_t mlen = strlen(magic);
+    char *end;
+    long v;
+    if (strncmp(line, magic, mlen) != 0 || !isspace((unsigned char)line[mlen])) {
+        fail(err, errlen, "%s, line %d: expected the header '%s %d', found '%.60s'", f->path,
+             line_no, magic, version, line);
+        return -1;
+    }
+    v = strtol(line + mlen, &end, 10);
+    if (*trim(end) != '\0' || v != version) {
+        fail(err, errlen, "%s, line %d: unsupported %s format version '%s' (this FMU reads %d)",
+             f->path, line_no, magic, trim(line + mlen), version);
+        return -1;
+    }
+    return 0;
+}
+
+static int parse_lines(hg_datafile *f, char *text, long size, const char *magic, int version,
+                       char *err, size_t errlen)
+{
+    int line_no = 0, have_header = 0;
+    char *p = text;
+    if ((long)strlen(text) != size) {
+        fail(err, errlen, "%s: contains a NUL byte (binary file?)", f->path);
+        return -1;
+    }
+    while (*p) {
+        char *nl = strchr(p, '\n'), *hash, *line;
+        if (nl) *nl = '\0';
+        line_no++;
+        hash = strchr(p, '#');
+        if (hash) *hash = '\0';
+        line = trim(p);
+        if (*line) {
+            if (!have_header) {
+                if (parse_header(f, line, line_no, magic, version, err, errlen)) return -1;
+                have_header = 1;
+            } else if (add_entry(f, line, line_no, err, errlen)) {
+                return -1;
+            }
+        }
+        if (!nl) break;
+        p = nl + 1;
+    }
+    if (!have_header) {
+        fail(err, errlen, "%s: no header line '%s %d' (only comments or blanks)", f->path, magic,
+             version);
+        return -1;
+    }
+    return 0;
+}
+
+hg_datafile *hg_datafile_load(const char *path, const char *magic, int version, char *err,
+                              size_t errlen)
+{
+    hg_datafile *f;
+    char *text;
+    long size = 0;
+    if (!path || !*path) {
+        fail(err, errlen, "data file path is empty");
+        return NULL;
+    }
+    text = read_whole_file(path, &size, err, errlen);
+    if (!text) return NULL;
+    f = calloc(1, sizeof *f);
+    if (!f || !(f->path = dup_str(path, strlen(path)))) {
+        fail(err, errlen, "out of memory reading '%s'", path);
+        free(f);
+        free(text);
+        return NULL;
+    }
+    if (parse_lines(f, text, size, magic, version, err, errlen)) {
+        hg_datafile_free(f);
+        f = NULL;
+    }
+    free(text);
+    return f;
+}
+
+void hg_datafile_free(hg_datafile *f)
+{
+    size_t i;
+    if (!f) return;
+    for (i = 0; i < f->n; i++) {
+        free(f->entries[i].key);
+        free(f->entries[i].rest);
+    }
+    free(f->entries);
+    free(f->path);
+    free(f);
+}
+
+static entry *find(const hg_datafile *f, const char *key)
+{
+    size_t i;
+    for (i = 0; i < f->n; i++)
+        if (strcmp(f->entries[i].key, key) == 0) return &f->entries[i];
+    return NULL;
+}
+
+static int count_tokens(const char *s)
+{
+    int n = 0;
+    while (*s) {
+        while (*s && isspace((unsigned char)*s)) s++;
+        if (!*s) break;
+        n++;
+        while (*s && !isspace((unsigned char)*s)) s++;
+    }
+    return n;
+}
+
+int hg_datafile_count(const hg_datafile *f, const char *key)
+{
+    const entry *e = find(f, key);
+    return e ? count_tokens(e->rest) : -1;
+}
+
+int hg_datafile_numbers(const hg_datafile *f, const char *key, size_t n_min, size_t n_max,
+                        double *vals, size_t *n, char *err, size_t errlen)
+{
+    entry *e = find(f, key);
+    const char *s;
+    size_t count = 0;
+    if (!e) {
+        fail(err, errlen, "%s: missing key '%s'", f->path, key);
+        return -1;
+    }
+    e->used = 1;
+    for (s = e->rest; *s;) {
+        char *end;
+        double v;
+        while (*s && isspace((unsigned char)*s)) s++;
+        if (!*s) break;
+        if (count == n_max) {
+            fail(err, errlen, "%s, line %d: key '%s' takes at most %zu value(s)", f->path, e->line,
+                 key, n_max);
+            return -1;
+        }
+        errno = 0;
+        v = strtod(s, &end);
+        if (end == s || (*end && !isspace((unsigned char)*end)) || !isfinite(v) ||
+            errno == ERANGE) {
+            size_t tlen = strcspn(s, " \t");
+            fail(err, errlen, "%s, line %d: key '%s': '%.*s' is not a finite number", f->path,
+                 e->line, key, (int)(tlen > 40 ? 40 : tlen), s);
+            return -1;
+        }
+        vals[count++] = v;
+        s = end;
+    }
+    if (count < n_min) {
+        fail(err, errlen, "%s, line %d: key '%s' needs at least %zu value(s), found %zu", f->path,
+             e->line, key, n_min, count);
+        return -1;
+    }
+    if (n) *n = count;
+    return 0;
+}
+
+int hg_datafile_number(const hg_datafile *f, const char *key, double lo, double hi, double *val,
+                       char *err, size_t errlen)
+{
+    double v;
+    if (hg_datafile_numbers(f, key, 1, 1, &v, NULL, err, errlen)) return -1;
+    if (!(v >= lo && v <= hi)) {
+        fail(err, errlen, "%s, line %d: key '%s' = %g is outside [%g, %g]", f->path,
+             find(f, key)->line, key, v, lo, hi);
+        return -1;
+    }
+    *val = v;
+    return 0;
+}
+
+int hg_datafile_number_opt(const hg_datafile *f, const char *key, double lo, double hi,
+                           double *val, char *err, size_t errlen)
+{
+    if (!find(f, key)) return 0;
+    return hg_datafile_number(f, key, lo, hi, val, err, errlen);
+}
+
+int hg_datafile_text(const hg_datafile *f, const char *key, char *buf, size_t buflen, char *err,
+                     size_t errlen)
+{
+    entry *e = find(f, key);
+    if (!e) {
+        fail(err, errlen, "%s: missing key '%s'", f->path, key);
+        return -1;
+    }
+    e->used = 1;
+    if (buflen) snprintf(buf, buflen, "%s", e->rest);
+    return 0;
+}
+
+int hg_datafile_check_all_used(const hg_datafile *f, char *err, size_t errlen)
+{
+    size_t i;
+    for (i = 0; i < f->n; i++) {
+        if (!f->entries[i].used) {
+            fail(err, errlen, "%s, line %d: unknown key '%s'", f->path, f->entries[i].line,
+                 f->entries[i].key);
+            return -1;
+        }
+    }
+    return 0;
+}

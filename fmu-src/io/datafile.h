@@ -1,0 +1,51 @@
+/* Plain-text data files (gear sets, lubricants, efficiency maps).
+ *
+ * Format (documented for users in docs/data-files.md):
+ *   - '#' starts a comment that runs to the end of the line; blank lines are ignored.
+ *   - The first non-comment line is the header "<magic> <version>", e.g. "hypoid-gearset 1".
+ *   - Every other line is "<key> <value> [<value> ...]", whitespace separated. Keys are unique.
+ *   - Values are numbers (strtod syntax, must be finite) unless read with hg_datafile_text().
+ *
+ * Every error message names the file, and the line where there is one. Nothing here knows what a
+ * gear or a lubricant is.
+ */
+#ifndef HG_DATAFILE_H
+#define HG_DATAFILE_H
+
+#include <stddef.h>
+
+#define HG_ERRLEN 512 /* size of every error-message buffer passed around the FMU */
+
+typedef struct hg_datafile hg_datafile;
+
+/* Reads and tokenises `path`. Rejects missing, empty, oversized (> 4 MiB) or binary files, a wrong
+ * header or version, duplicate keys. Returns NULL and fills err on failure. */
+hg_datafile *hg_datafile_load(const char *path, const char *magic, int version, char *err,
+                              size_t errlen);
+
+void hg_datafile_free(hg_datafile *f);
+
+/* Number of values on the line of `key`, or -1 when the key is absent. */
+int hg_datafile_count(const hg_datafile *f, const char *key);
+
+/* Reads between n_min and n_max finite numbers of `key` into vals; *n receives the count (may be
+ * NULL when n_min == n_max). Returns 0, or -1 with err naming file, line and key. */
+int hg_datafile_numbers(const hg_datafile *f, const char *key, size_t n_min, size_t n_max,
+                        double *vals, size_t *n, char *err, size_t errlen);
+
+/* One finite number within [lo, hi]. */
+int hg_datafile_number(const hg_datafile *f, const char *key, double lo, double hi, double *val,
+                       char *err, size_t errlen);
+
+/* Same as hg_datafile_number when the key is present; leaves *val unchanged when it is absent. */
+int hg_datafile_number_opt(const hg_datafile *f, const char *key, double lo, double hi,
+                           double *val, char *err, size_t errlen);
+
+/* The rest of the line after `key`, whitespace-trimmed, copied into buf (truncated to buflen). */
+int hg_datafile_text(const hg_datafile *f, const char *key, char *buf, size_t buflen, char *err,
+                     size_t errlen);
+
+/* Fails, naming the first one, when a key was never read: catches misspelt keys in user files. */
+int hg_datafile_check_all_used(const hg_datafile *f, char *err, size_t errlen);
+
+#endif
