@@ -1,0 +1,235 @@
+/* FMU state snapshots: get, set, free, serialize and deserialize (deep copies throughout). */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fmi/instance.h"
+
+#define SNAPSHOT_MAGIC 0x48475331u /* "HGS1" */
+#define ANY_STATE (ST_INSTANTIATED | ST_INITIALIZATION | ST_STEP_COMPLETE | ST_TERMINATED | ST_ERROR)
+
+typedef struct {
+    hg_fmi_state state;
+    int set_up;
+    double start_time;
+    hg_dyn_inputs input_der;
+    hg_vars vars;  /* strings owned by the snapshot */
+    hg_runtime rt; /* meaningful when set_up */
+} hg_snapshot;
+
+fmi2Status fmi2GetFMUstate(fmi2Component comp, fmi2FMUstate *out)
+{
+    hg_instance *c = comp;
+    hg_snapshot *s;
+    if (!hg_allowed(c, "fmi2GetFMUstate", ANY_STATE)) return fmi2Error;
+    if (!out) {
+        hg_log(c, fmi2Error, CAT_ERROR, "fmi2GetFMUstate: FMUstate pointer is NULL");
+        return fmi2Error;
+    }
+    s = *out ? (hg_snapshot *)*out : calloc(1, sizeof *s);
+    if (!s || hg_vars_copy(&s->vars, &c->vars)) {
+        hg_log(c, fmi2Error, CAT_ERROR, "fmi2GetFMUstate: out of memory");
+        if (s && !*out) {
+            hg_vars_free_strings(&s->vars);
+            free(s);
+        }
+        return fmi2Error;
+    }
+    s->state = c->state;
+    s->set_up = c->set_up;
+    s->start_time = c->start_time;
+    s->input_der = c->input_der;
+    if (c->set_up) hg_model_save(c->model, &s->rt);
+    *out = s;
+    return fmi2OK;
+}
+
+static fmi2Status restore(hg_instance *c, const hg_snapshot *s)
+{
+    char err[HG_ERRLEN];
+    int same = c->set_up && hg_vars_same_parameters(&c->vars, &s->vars);
+    if (hg_vars_copy(&c->vars, &s->vars)) {
+        hg_log(c, fmi2Error, CAT_ERROR, "fmi2SetFMUstate: out of memory");
+        return fmi2Error;
+    }
+    c->state = s->state;
+    c->start_time = s->start_time;
+    c->input_der = s->input_der;
+    c->set_up = 0;
+    if (!s->set_up) return fmi2OK;
+    if (!hg_instance_model(c)) {
+        hg_log(c, fmi2Error, CAT_ERROR, "fmi2SetFMUstate: out of memory");
+        return fmi2Error;
+    }
+    if ((!same && hg_model_setup(c->model, &c->vars, c->start_time, err, sizeof err)) ||
+        hg_model_restore(c->model, &c->vars, &s->rt, err, sizeof err)) {
+        hg_log(c, fmi2Error, CAT_ERROR, "fmi2SetFMUstate: %s", err);
+        c->state = ST_ERROR;
+        return fmi2Error;
+    }
+    c->set_up = 1;
+    return fmi2OK;
+}
+
+fmi2Status fmi2SetFMUstate(fmi2Component comp, fmi2FMUstate state)
+{
+    hg_instance *c = comp;
+    if (!hg_allowed(c, "fmi2SetFMUstate", ANY_STATE)) return fmi2Error;
+    if (!state) {
+        hg_log(c, fmi2Error, CAT_ERROR, "fmi2SetFMUstate: FMUstate is NULL");
+        return fmi2Error;
+    }
+    if (!c->resource_dir && ((const hg_snapshot *)state)->set_up) {
+        hg_log(c, fmi2Error, CAT_ERROR, "fmi2SetFMUstate: this instance has no resource location");
+        return fmi2Error;
+    }
+    return restore(c, state);
+}
+
+fmi2Status fmi2FreeFMUstate(fmi2Component comp, fmi2FMUstate *state)
+{
+    hg_instance *c = comp;
+    if (!hg_allowed(c, "fmi2FreeFMUstate", ANY_STATE)) return fmi2Error;
+    if (state && *state) {
+        hg_vars_free_strings(&((hg_snapshot *)*state)->vars);
+        free(*state);
+        *state = NULL;
+    }
+    return fmi2OK;
+}
+
+/* ------------------------------------------------------------------ serialization
+ * Layout: uint32 magic, uint64 sizeof(hg_snapshot), the snapshot with string pointers zeroed,
+ * then for each String variable in table order: uint64 length, the bytes (no terminator). */
+
+static char **string_slot(hg_vars *v, const hg_var_info *info)
+{
+    return (char **)((char *)v + info->offset);
+}
+
+static size_t serialized_size(const hg_snapshot *s)
+{
+    size_t n = sizeof(uint32_t) + sizeof(uint64_t) + sizeof *s;
+    int r;
+    for (r = 0; r < HG_NUM_VARS; r++)
+        if (hg_var_table[r].type == HG_STRING)
+            n += sizeof(uint64_t) + strlen(*string_slot((hg_vars *)&s->vars, &hg_var_table[r]));
+    return n;
+}
+
+fmi2Status fmi2SerializedFMUstateSize(fmi2Component comp, fmi2FMUstate state, size_t *size)
+{
+    hg_instance *c = comp;
+    if (!hg_allowed(c, "fmi2SerializedFMUstateSize", ANY_STATE)) return fmi2Error;
+    if (!state || !size) {
+        hg_log(c, fmi2Error, CAT_ERROR, "fmi2SerializedFMUstateSize: NULL argument");
+        return fmi2Error;
+    }
+    *size = serialized_size(state);
+    return fmi2OK;
+}
+
+fmi2Status fmi2SerializeFMUstate(fmi2Component comp, fmi2FMUstate state, fmi2Byte bytes[],
+                                 size_t size)
+{
+    hg_instance *c = comp;
+    const hg_snapshot *s = state;
+    hg_snapshot flat;
+    uint32_t magic = SNAPSHOT_MAGIC;
+    uint64_t n = sizeof flat;
+    char *o = bytes;
+    int r;
+    if (!hg_allowed(c, "fmi2SerializeFMUstate", ANY_STATE)) return fmi2Error;
+    if (!s || !bytes || size < serialized_size(s)) {
+        hg_log(c, fmi2Error, CAT_ERROR, "fmi2SerializeFMUstate: NULL state or buffer, or buffer "
+               "of %zu bytes is smaller than the %zu needed", size, s ? serialized_size(s) : 0);
+        return fmi2Error;
+    }
+    flat = *s;
+    memcpy(o, &magic, sizeof magic), o += sizeof magic;
+    memcpy(o, &n, sizeof n), o += sizeof n;
+    for (r = 0; r < HG_NUM_VARS; r++)
+        if (hg_var_table[r].type == HG_STRING) *string_slot(&flat.vars, &hg_var_table[r]) = NULL;
+    memcpy(o, &flat, sizeof flat), o += sizeof flat;
+    for (r = 0; r < HG_NUM_VARS; r++) {
+        const char *str;
+        if (hg_var_table[r].type != HG_STRING) continue;
+        str = *string_slot((hg_vars *)&s->vars, &hg_var_table[r]);
+        n = strlen(str);
+        memcpy(o, &n, sizeof n), o += sizeof n;
+        memcpy(o, str, (size_t)n), o += n;
+    }
+    return fmi2OK;
+}
+
+/* A deserialized snapshot comes from outside: check what would make it unsafe or meaningless. */
+static int snapshot_valid(const hg_snapshot *s)
+{
+    int r;
+    if (s->state != ST_INSTANTIATED && s->state != ST_INITIALIZATION &&
+        s->state != ST_STEP_COMPLETE && s->state != ST_TERMINATED && s->state != ST_ERROR)
+        return 0;
+    if (s->set_up && (s->rt.mode < -1 || s->rt.mode > 1 || !isfinite(s->rt.t))) return 0;
+    for (r = 0; r < HG_NUM_VARS; r++) {
+        const hg_var_info *info = &hg_var_table[r];
+        const char *p = (const char *)&s->vars + info->offset;
+        double v;
+        if (info->type == HG_STRING || info->causality == HG_OUTPUT ||
+            info->causality == HG_CALCULATED)
+            continue;
+        v = info->type == HG_REAL ? *(const double *)p : *(const int *)p;
+        if (!isfinite(v) || (info->has_min && v < info->min) || (info->has_max && v > info->max))
+            return 0;
+    }
+    return 1;
+}
+
+static int read_strings(hg_snapshot *s, const char *in, const char *end)
+{
+    int r;
+    for (r = 0; r < HG_NUM_VARS; r++) {
+        uint64_t n;
+        char **slot;
+        if (hg_var_table[r].type != HG_STRING) continue;
+        slot = string_slot(&s->vars, &hg_var_table[r]);
+        if ((size_t)(end - in) < sizeof n) return -1;
+        memcpy(&n, in, sizeof n), in += sizeof n;
+        if (n > 4095 || (uint64_t)(end - in) < n || !(*slot = malloc((size_t)n + 1))) return -1;
+        memcpy(*slot, in, (size_t)n), in += n;
+        (*slot)[n] = '\0';
+        if (strlen(*slot) != n) return -1;
+    }
+    return in == end ? 0 : -1;
+}
+
+fmi2Status fmi2DeSerializeFMUstate(fmi2Component comp, const fmi2Byte bytes[], size_t size,
+                                   fmi2FMUstate *state)
+{
+    hg_instance *c = comp;
+    const char *in = bytes, *end = bytes + size;
+    hg_snapshot *s;
+    uint32_t magic;
+    uint64_t n;
+    int r;
+    if (!hg_allowed(c, "fmi2DeSerializeFMUstate", ANY_STATE)) return fmi2Error;
+    if (!bytes || !state || size < sizeof magic + sizeof n + sizeof *s) goto bad;
+    memcpy(&magic, in, sizeof magic), in += sizeof magic;
+    memcpy(&n, in, sizeof n), in += sizeof n;
+    if (magic != SNAPSHOT_MAGIC || n != sizeof *s || !(s = calloc(1, sizeof *s))) goto bad;
+    memcpy(s, in, sizeof *s), in += sizeof *s;
+    for (r = 0; r < HG_NUM_VARS; r++)
+        if (hg_var_table[r].type == HG_STRING) *string_slot(&s->vars, &hg_var_table[r]) = NULL;
+    if (read_strings(s, in, end) || !snapshot_valid(s)) {
+        hg_vars_free_strings(&s->vars);
+        free(s);
+        goto bad;
+    }
+    if (*state) fmi2FreeFMUstate(comp, state);
+    *state = s;
+    return fmi2OK;
+bad:
+    hg_log(c, fmi2Error, CAT_ERROR, "fmi2DeSerializeFMUstate: %zu bytes are not a state "
+           "serialized by this FMU build", size);
+    return fmi2Error;
+}

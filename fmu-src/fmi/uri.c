@@ -1,0 +1,72 @@
+/* file:// URIs (fmuResourceLocation) to local paths, RFC 3986 percent-decoding included. */
+#include <ctype.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fmi/instance.h"
+
+static int hex_value(char ch)
+{
+    if (ch >= '0' && ch <= '9') return ch - '0';
+    ch = (char)tolower((unsigned char)ch);
+    return ch >= 'a' && ch <= 'f' ? ch - 'a' + 10 : -1;
+}
+
+/* Skips "file:", then "//" + authority (empty or "localhost"), leaving the absolute path. */
+static const char *path_part(const char *uri, char *why, size_t whylen)
+{
+    const char *p;
+    if (strncmp(uri, "file:", 5) != 0) {
+        snprintf(why, whylen, "'%.200s' is not a file:// URI", uri);
+        return NULL;
+    }
+    p = uri + 5;
+    if (strncmp(p, "//", 2) == 0) {
+        p += 2;
+        if (strncmp(p, "localhost/", 10) == 0)
+            p += 9;
+        else if (*p != '/') {
+            snprintf(why, whylen, "'%.200s' names a remote host; only local files are supported",
+                     uri);
+            return NULL;
+        }
+    }
+    if (*p != '/') {
+        snprintf(why, whylen, "'%.200s' has no absolute path", uri);
+        return NULL;
+    }
+    return p;
+}
+
+char *hg_uri_to_path(const char *uri, char *why, size_t whylen)
+{
+    const char *p;
+    char *out, *o;
+    if (!uri || !*uri) {
+        snprintf(why, whylen, "the resource location is empty");
+        return NULL;
+    }
+    if (!(p = path_part(uri, why, whylen))) return NULL;
+    if (!(out = malloc(strlen(p) + 1))) {
+        snprintf(why, whylen, "out of memory");
+        return NULL;
+    }
+    for (o = out; *p; p++) {
+        if (*p == '%') {
+            int hi = hex_value(p[1]), lo = hi < 0 ? -1 : hex_value(p[2]);
+            if (hi < 0 || lo < 0 || (hi == 0 && lo == 0)) {
+                snprintf(why, whylen, "'%.200s' has a bad percent escape", uri);
+                free(out);
+                return NULL;
+            }
+            *o++ = (char)(hi * 16 + lo);
+            p += 2;
+        } else {
+            *o++ = *p;
+        }
+    }
+    *o = '\0';
+    while (o > out + 1 && o[-1] == '/') *--o = '\0'; /* drop trailing slashes */
+    return out;
+}

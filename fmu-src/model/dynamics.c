@@ -1,0 +1,138 @@
+/* 4-DoF torsional dynamics of the hypoid pair: see dynamics.h. */
+#include "model/dynamics.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "hg_vars.h"
+
+#define SLIDE_EPS 1e-4 /* regularisation of the sliding direction [m/s] (physics 8.8) */
+
+double hg_backlash_f(double x, double b, int mode)
+{
+    if (mode == HG_MODE_DRIVE) return x - b;
+    if (mode == HG_MODE_BACK) return x + b;
+    return 0.0;
+}
+
+int hg_backlash_mode(double x, double b)
+{
+    if (x >= b) return HG_MODE_DRIVE;
+    if (x <= -b) return HG_MODE_BACK;
+    return HG_MODE_FREE;
+}
+
+static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn_eval *ev)
+{
+    double theta, w_p = y[HG_Y_W_P];
+    if (p->mesh_varying) {
+        theta = p->gear->N_p * y[HG_Y_PHI_P];
+        hg_gearset_mesh(p->gear, theta, &ev->mesh);
+        ev->f = hg_backlash_f(y[HG_Y_X], p->b, mode);
+    } else {
+        memset(&ev->mesh, 0, sizeof ev->mesh);
+        ev->mesh.k_m = p->k_m0;
+        ev->mesh.R_p = p->R_p0;
+        ev->f = y[HG_Y_X];
+    }
+    ev->R_g = ev->mesh.R_p * p->ratio;
+    /* eq. 25: x' = R_p w_p - R_g w_g - e_0', e_0' = (de_0/dtheta) N_p w_p */
+    ev->xdot = ev->mesh.R_p * w_p - ev->R_g * y[HG_Y_W_G] -
+               (p->mesh_varying ? ev->mesh.de_0 * p->gear->N_p * w_p : 0.0);
+    ev->W_t = ev->mesh.k_m * ev->f + p->c_m * ev->xdot;
+}
+
+/* Friction torques from the sliding direction (physics 9.1): T_fp w_p + T_fg w_g = -P_loss. */
+static void pair_friction(const hg_dyn_params *p, const hg_dyn_inputs *u, const double *y,
+                          int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
+{
+    int k, with_contact = p->friction.model != HG_FRICTION_MODEL_NONE || all_pairs;
+    double w_p = y[HG_Y_W_P], w_g = y[HG_Y_W_G], W = ev->W_t > 0.0 ? ev->W_t : 0.0;
+    hg_pair_geometry geo;
+    hg_gearset_pairs(p->gear, p->gear->N_p * y[HG_Y_PHI_P], with_contact, &geo);
+    for (k = 0; k < HG_MAX_PAIRS; k++) {
+        hg_pair_contact c;
+        double vs_x, vs_y, norm;
+        ev->W_pair[k] = geo.ls[k] * W;
+        if (!with_contact) continue;
+        c.W = ev->W_pair[k];
+        c.u_p[0] = w_p * geo.up[k][0];
+        c.u_p[1] = w_p * geo.up[k][1];
+        c.u_g[0] = w_g * geo.ug[k][0];
+        c.u_g[1] = w_g * geo.ug[k][1];
+        c.R_x = geo.R_x[k];
+        c.R_y = geo.R_y[k];
+        c.T_bath = u->T_bath;
+        hg_friction_pair(&p->friction, &c, &T_c_warm[k], &ev->pair[k]);
+        vs_x = c.u_p[0] - c.u_g[0];
+        vs_y = c.u_p[1] - c.u_g[1];
+        norm = ev->pair[k].F_f / sqrt(vs_x * vs_x + vs_y * vs_y + SLIDE_EPS * SLIDE_EPS);
+        ev->T_fp -= norm * (vs_x * geo.up[k][0] + vs_y * geo.up[k][1]);
+        ev->T_fg += norm * (vs_x * geo.ug[k][0] + vs_y * geo.ug[k][1]);
+        ev->P_loss += norm * (vs_x * vs_x + vs_y * vs_y);
+    }
+}
+
+static void efficiency(const double *y, const hg_dyn_inputs *u, hg_dyn_eval *ev)
+{
+    double P_drive = u->T_s * y[HG_Y_W_S], P_coast = -ev->T_w * y[HG_Y_W_W];
+    ev->P_in = P_drive > P_coast ? P_drive : P_coast;
+    if (ev->P_in < 0.0) ev->P_in = 0.0;
+    if (ev->P_in > 0.0) {
+        ev->eta = 1.0 - ev->P_loss / ev->P_in;
+        if (ev->eta < 0.0) ev->eta = 0.0;
+    } else {
+        ev->eta = ev->P_loss > 0.0 ? 0.0 : 1.0;
+    }
+}
+
+void hg_dyn_evaluate(const hg_dyn_params *p, const hg_dyn_inputs *u, int mode, const double *y,
+                     int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
+{
+    double d1 = y[HG_Y_W_S] - y[HG_Y_W_P], d2 = y[HG_Y_W_G] - y[HG_Y_W_W];
+    memset(ev, 0, sizeof *ev);
+    mesh_state(p, mode, y, ev);
+    if (p->speed_governor)
+        ev->T_w = u->T_s * p->ratio + p->K_p * (y[HG_Y_W_W] - u->w_set / p->ratio) +
+                  p->K_i * y[HG_Y_GOV];
+    else
+        ev->T_w = u->T_w;
+    if (p->friction.model != HG_FRICTION_MODEL_NONE || all_pairs)
+        pair_friction(p, u, y, all_pairs, T_c_warm, ev);
+    efficiency(y, u, ev);
+    ev->P_damp = p->c_t1 * d1 * d1 + p->c_t2 * d2 * d2 + p->c_m * ev->xdot * ev->xdot;
+    if (p->mesh_varying) {
+        double N_p_w = p->gear->N_p * y[HG_Y_W_P];
+        ev->P_exc = -ev->W_t * ev->mesh.de_0 * N_p_w + 0.5 * ev->mesh.dk_m * N_p_w * ev->f * ev->f;
+    }
+}
+
+void hg_dyn_derivatives(const hg_dyn_params *p, const hg_dyn_inputs *u, const double *y,
+                        const hg_dyn_eval *ev, double *ydot)
+{
+    double T_1 = p->k_t1 * y[HG_Y_TWIST1] + p->c_t1 * (y[HG_Y_W_S] - y[HG_Y_W_P]);
+    double T_2 = p->k_t2 * y[HG_Y_TWIST2] + p->c_t2 * (y[HG_Y_W_G] - y[HG_Y_W_W]);
+    ydot[HG_Y_TWIST1] = y[HG_Y_W_S] - y[HG_Y_W_P];
+    ydot[HG_Y_TWIST2] = y[HG_Y_W_G] - y[HG_Y_W_W];
+    ydot[HG_Y_PHI_P] = y[HG_Y_W_P];
+    ydot[HG_Y_X] = ev->xdot;
+    ydot[HG_Y_W_S] = (u->T_s - T_1) / p->I_s;                                  /* eq. 20 */
+    ydot[HG_Y_W_P] = (T_1 - ev->mesh.R_p * ev->W_t + ev->T_fp) / p->I_p;       /* eq. 21 */
+    ydot[HG_Y_W_G] = (ev->R_g * ev->W_t - T_2 + ev->T_fg) / p->I_g;            /* eq. 22, D3 */
+    ydot[HG_Y_W_W] = (T_2 - ev->T_w) / p->I_w;                                 /* eq. 23 */
+    ydot[HG_Y_GOV] = p->speed_governor ? y[HG_Y_W_W] - u->w_set / p->ratio : 0.0;
+    ydot[HG_Y_E_IN] = u->T_s * y[HG_Y_W_S];
+    ydot[HG_Y_E_OUT] = ev->T_w * y[HG_Y_W_W];
+    ydot[HG_Y_E_FRIC] = ev->P_loss;
+    ydot[HG_Y_E_DAMP] = ev->P_damp;
+    ydot[HG_Y_E_EXC] = ev->P_exc;
+    ydot[HG_Y_ETA2] = ev->eta * ev->eta;
+}
+
+double hg_dyn_stored_energy(const hg_dyn_params *p, const double *y, const hg_dyn_eval *ev)
+{
+    double ws = y[HG_Y_W_S], wp = y[HG_Y_W_P], wg = y[HG_Y_W_G], ww = y[HG_Y_W_W];
+    double t1 = y[HG_Y_TWIST1], t2 = y[HG_Y_TWIST2];
+    return 0.5 * (p->I_s * ws * ws + p->I_p * wp * wp + p->I_g * wg * wg + p->I_w * ww * ww) +
+           0.5 * (p->k_t1 * t1 * t1 + p->k_t2 * t2 * t2 + ev->mesh.k_m * ev->f * ev->f);
+}

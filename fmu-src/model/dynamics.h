@@ -1,0 +1,75 @@
+/* The 4-DoF torsional hypoid pair (paper eqs. 20-25 with correction D3, physics.md 8.1) as a pure
+ * right-hand side, with the energy audit and efficiency integrals carried as extra states. */
+#ifndef HG_DYNAMICS_H
+#define HG_DYNAMICS_H
+
+#include "model/friction.h"
+#include "model/gearset.h"
+
+enum {
+    HG_Y_TWIST1, /* phi_s - phi_p [rad] */
+    HG_Y_TWIST2, /* phi_g - phi_w [rad] */
+    HG_Y_PHI_P,  /* pinion angle, wrapped by whole load-share periods [rad] */
+    HG_Y_X,      /* dynamic transmission error x [m] (eq. 25) */
+    HG_Y_W_S, HG_Y_W_P, HG_Y_W_G, HG_Y_W_W, /* angular speeds [rad/s] */
+    HG_Y_GOV,    /* integral of the governor's wheel-speed error [rad] */
+    HG_Y_E_IN, HG_Y_E_OUT, HG_Y_E_FRIC, HG_Y_E_DAMP, HG_Y_E_EXC, /* energy audit [J] */
+    HG_Y_ETA2,   /* integral of eta^2 dt [s] */
+    HG_NY
+};
+
+/* Backlash contact modes: the right-hand side uses the branch of f(x) of the current mode, so no
+ * internal step ever straddles a contact change; root-finding switches the mode. */
+enum { HG_MODE_BACK = -1, HG_MODE_FREE = 0, HG_MODE_DRIVE = 1 };
+
+typedef struct {
+    double I_s, I_p, I_g, I_w;   /* [kg m^2] */
+    double k_t1, k_t2;           /* [N m/rad] */
+    double c_t1, c_m, c_t2;      /* [N m s/rad], [N s/m], [N m s/rad] */
+    double b;                    /* half backlash [m] */
+    int mesh_varying;            /* 0: constant k_m0, R_p0, no e_0, no backlash */
+    double k_m0, R_p0;           /* mean mesh stiffness [N/m] and radius [m] */
+    double ratio;                /* N_g / N_p */
+    const hg_gearset *gear;      /* series already scaled by k_m_scale and e_0_scale */
+    hg_friction_config friction;
+    int speed_governor;          /* load_mode = speed */
+    double K_p, K_i;             /* governor gains [N m s/rad], [N m/rad] */
+} hg_dyn_params;
+
+typedef struct {
+    double T_s, T_w, T_bath, w_set; /* the FMU inputs at the evaluation time */
+} hg_dyn_inputs;
+
+typedef struct {
+    hg_mesh_point mesh;
+    double R_g;        /* gear contact radius R_p N_g/N_p [m] (D4) */
+    double f;          /* backlash function f(x) [m] */
+    double xdot;       /* dx/dt [m/s] */
+    double W_t;        /* mesh load k_m f + c xdot [N] */
+    double T_w;        /* wheel-end torque, input or governor [N m] */
+    double T_fp, T_fg; /* friction torques on pinion and gear [N m] */
+    double P_loss, P_in, eta;
+    double P_damp, P_exc; /* damper dissipation and parametric excitation power [W] */
+    double W_pair[HG_MAX_PAIRS];
+    hg_pair_friction pair[HG_MAX_PAIRS];
+} hg_dyn_eval;
+
+/* Evaluates everything at state y in contact mode `mode`. Pair quantities are computed when the
+ * friction model needs them or `all_pairs` is set (for outputs). T_c_warm: per-pair warm start. */
+void hg_dyn_evaluate(const hg_dyn_params *p, const hg_dyn_inputs *u, int mode, const double *y,
+                     int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev);
+
+/* dy/dt from an evaluation at y. */
+void hg_dyn_derivatives(const hg_dyn_params *p, const hg_dyn_inputs *u, const double *y,
+                        const hg_dyn_eval *ev, double *ydot);
+
+/* Kinetic plus elastic energy at y [J]. */
+double hg_dyn_stored_energy(const hg_dyn_params *p, const double *y, const hg_dyn_eval *ev);
+
+/* Backlash function f(x) of the mode's branch (Kahraman & Singh 1990; b is the half backlash). */
+double hg_backlash_f(double x, double b, int mode);
+
+/* The contact mode that x lies in. */
+int hg_backlash_mode(double x, double b);
+
+#endif

@@ -1,0 +1,16 @@
+/* The friction seam: per-pair friction from the per-pair contact state, whatever the model. */
+#ifndef HG_FRICTION_H
+#define HG_FRICTION_H
+
+#include "model/pair_contact.h"
+
+typedef struct {
+    int model;       /* HG_FRICTION_MODEL_* of hg_vars.h */
+    double mu_const; /* friction coefficient of the coulomb model */
+} hg_friction_config;
+
+/* Fills every field of *out. *T_c_warm is the pair's warm start for thermal models (in/out). */
+void hg_friction_pair(const hg_friction_config *cfg, const hg_pair_contact *c, double *T_c_warm,
+                      hg_pair_friction *out);
+
+#endif

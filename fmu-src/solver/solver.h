@@ -1,0 +1,43 @@
+/* The integrator seen by the model: an ODE y' = f(t, y) with root functions g(t, y). The model
+ * never sees which method runs underneath. */
+#ifndef HG_SOLVER_H
+#define HG_SOLVER_H
+
+#include <stddef.h>
+
+typedef int (*hg_rhs_fn)(double t, const double *y, double *ydot, void *user);
+typedef int (*hg_root_fn)(double t, const double *y, double *g, void *user);
+
+typedef enum { HG_METHOD_BDF, HG_METHOD_ADAMS } hg_method;
+
+typedef struct {
+    hg_method method;
+    double rtol;
+    const double *atol; /* one per state */
+    long max_steps;     /* internal steps allowed per hg_solver_advance call */
+} hg_solver_options;
+
+typedef struct hg_solver hg_solver;
+
+hg_solver *hg_solver_new(int n, int n_roots, hg_rhs_fn f, hg_root_fn g, void *user,
+                         const hg_solver_options *opt, char *err, size_t errlen);
+void hg_solver_free(hg_solver *s);
+
+/* Starts (or restarts, discarding the history) the integration from (t0, y0). */
+int hg_solver_restart(hg_solver *s, double t0, const double *y0, char *err, size_t errlen);
+
+/* Largest internal step (0 = unlimited). */
+int hg_solver_set_max_step(hg_solver *s, double h_max, char *err, size_t errlen);
+
+typedef enum { HG_ADVANCE_REACHED, HG_ADVANCE_ROOT, HG_ADVANCE_FAILED } hg_advance_result;
+
+/* Integrates towards t_stop without passing it. Returns REACHED with *t = t_stop, or ROOT with
+ * *t at the first root and roots[i] = +1/-1 for each root function that crossed upwards/
+ * downwards (0 otherwise); y receives the solution at *t. FAILED fills err. */
+hg_advance_result hg_solver_advance(hg_solver *s, double t_stop, double *t, double *y,
+                                    int *roots, char *err, size_t errlen);
+
+/* Cumulative count of internal steps and right-hand-side evaluations. */
+void hg_solver_stats(const hg_solver *s, long *steps, long *rhs_evals);
+
+#endif

@@ -1,0 +1,133 @@
+"""Gear-set data files `hypoid-gearset 1` (docs/data-files.md): writer and a strict reader."""
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from hypoid.tca_fit import MAX_HARMONICS, Series
+
+MAGIC = "hypoid-gearset 1"
+MESH_SERIES = ("k_m", "R_p", "e_0")  # argument ψ = θ (one mesh cycle)
+PAIR_SERIES = ("ls", "R_x", "R_y", "up_x", "up_y", "ug_x", "ug_y")  # ψ_k = (θ + 2π(k−1))/3
+CONTACT_SERIES = PAIR_SERIES[1:]  # undefined out of contact
+UNITS = {"k_m": "N/m", "R_p": "m", "e_0": "m", "ls": "1", "R_x": "m", "R_y": "m",
+         "up_x": "m/(rad/s) of pinion speed", "up_y": "m/(rad/s) of pinion speed",
+         "ug_x": "m/(rad/s) of gear speed", "ug_y": "m/(rad/s) of gear speed"}
+PARTS = ("mean", "sin", "cos")
+
+
+class GearsetFileError(ValueError):
+    """A gear-set file breaks docs/data-files.md; the message names the file and line."""
+
+
+@dataclass
+class Gearset:
+    """Contents of a gear-set file; `comments` and `notes` (per series) are written as # lines."""
+
+    name: str
+    N_p: int
+    N_g: int
+    series: dict
+    comments: list = field(default_factory=list)
+    notes: dict = field(default_factory=dict)
+
+
+def _number(x):
+    return f"{x:.10g}"
+
+
+def _trimmed(s):
+    """Coefficient arrays without trailing harmonics whose sin and cos are both zero."""
+    n = len(s.sin)
+    while n and s.sin[n - 1] == 0.0 and s.cos[n - 1] == 0.0:
+        n -= 1
+    return s.sin[:n], s.cos[:n]
+
+
+def format_gearset(gs):
+    """The text of a gear-set file."""
+    lines = [f"# {c}" if c else "#" for c in gs.comments]
+    name = " ".join(gs.name.replace("#", " ").split())  # one line, no comment sign
+    lines += [MAGIC, f"name {name}", f"N_p {gs.N_p}", f"N_g {gs.N_g}"]
+    for key in MESH_SERIES + PAIR_SERIES:
+        s = gs.series[key]
+        sin, cos = _trimmed(s)
+        lines += ["", f"# {key} [{UNITS[key]}]" + (f": {gs.notes[key]}" if key in gs.notes else "")]
+        lines += [f"{key}.mean {_number(s.mean)}",
+                  " ".join([f"{key}.sin"] + [_number(c) for c in sin]),
+                  " ".join([f"{key}.cos"] + [_number(c) for c in cos])]
+    return "\n".join(lines) + "\n"
+
+
+def write_gearset(path, gs):
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(format_gearset(gs))
+
+
+def read_gearset(path):
+    """Parses and checks a gear-set file; raises GearsetFileError naming file and line."""
+    entries = _entries(path)
+    name = entries.pop("name", (None, None))[1]
+    if not name:
+        raise GearsetFileError(f"{path}: missing key 'name'")
+    N_p, N_g = (_teeth(path, entries, key) for key in ("N_p", "N_g"))
+    series = {key: _series(path, entries, key) for key in MESH_SERIES + PAIR_SERIES}
+    if entries:
+        key, (line, _) = next(iter(entries.items()))
+        raise GearsetFileError(f"{path}, line {line}: unknown key '{key}'")
+    return Gearset(name, N_p, N_g, series)
+
+
+def _entries(path):
+    """{key: (line, rest of line)} after the header; checks header and unique keys."""
+    with open(path, encoding="utf-8") as f:
+        raw = f.read().splitlines()
+    entries, header = {}, False
+    for line_no, text in enumerate(raw, 1):
+        text = text.split("#", 1)[0].strip()
+        if not text:
+            continue
+        if not header:
+            if " ".join(text.split()) != MAGIC:
+                raise GearsetFileError(f"{path}, line {line_no}: header must be '{MAGIC}'")
+            header = True
+            continue
+        key, rest = (text.split(None, 1) + [""])[:2]
+        if key in entries:
+            raise GearsetFileError(f"{path}, line {line_no}: duplicate key '{key}' "
+                                   f"(first on line {entries[key][0]})")
+        entries[key] = (line_no, rest.strip())
+    if not header:
+        raise GearsetFileError(f"{path}: no header '{MAGIC}'")
+    return entries
+
+
+def _numbers(path, entries, key):
+    if key not in entries:
+        raise GearsetFileError(f"{path}: missing key '{key}'")
+    line, rest = entries.pop(key)
+    try:
+        values = [float(v) for v in rest.split()]
+    except ValueError:
+        raise GearsetFileError(f"{path}, line {line}: '{key}' has a value that is not a number")
+    if not all(math.isfinite(v) for v in values):
+        raise GearsetFileError(f"{path}, line {line}: '{key}' has a NaN or infinite value")
+    return line, values
+
+
+def _teeth(path, entries, key):
+    line, values = _numbers(path, entries, key)
+    if len(values) != 1 or values[0] != int(values[0]) or values[0] < 1:
+        raise GearsetFileError(f"{path}, line {line}: '{key}' must be one positive integer")
+    return int(values[0])
+
+
+def _series(path, entries, key):
+    (_, mean), (line_s, sin), (line_c, cos) = (_numbers(path, entries, f"{key}.{p}") for p in PARTS)
+    if len(mean) != 1:
+        raise GearsetFileError(f"{path}: '{key}.mean' must have exactly one value")
+    if len(sin) != len(cos) or len(sin) > MAX_HARMONICS:
+        raise GearsetFileError(f"{path}, lines {line_s}/{line_c}: '{key}.sin' and '{key}.cos' need "
+                               f"equal counts of at most {MAX_HARMONICS} (have {len(sin)}/{len(cos)})")
+    return Series(mean[0], np.array(sin), np.array(cos))

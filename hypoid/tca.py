@@ -1,0 +1,521 @@
+"""`hypoid tca`: gear-set files from the surrogate TCA (physics.md §10) or from a user's TCA table.
+
+    hypoid tca surrogate --set N --out FILE | --all --out-dir DIR   [--harmonics 8] [--contact-harmonics 32]
+    hypoid tca import TABLE.csv --out FILE [--speed-rpm RPM] [--name TEXT] [--harmonics 8] [--contact-harmonics 32]
+    hypoid tca export-csv --set N --out TABLE.csv [--speed-rpm 2000] [--rows 360]
+
+The table format is documented in docs/tca-import.md, the gear-set format in docs/data-files.md.
+"""
+
+import argparse
+import csv
+import math
+import os
+import sys
+from dataclasses import dataclass
+
+import numpy as np
+
+from hypoid import __version__
+from hypoid import tca_surrogate as sur
+from hypoid.gearset_file import CONTACT_SERIES, MESH_SERIES, PAIR_SERIES, UNITS, Gearset, write_gearset
+from hypoid.tca_fit import MAX_HARMONICS, N_SAMPLES, fill_gaps, fit, fit_error, grid, resample
+
+HARMONICS = 8  # k_m, R_p, e_0, ls: the paper's eqs. (1)–(4)
+CONTACT_HARMONICS = 32  # R_x … ug_y: with 8, the return across the short no-contact gap leaves
+#                         up to 3 % error in contact (gear set 2); 32 leave at most 0.14 %
+LS_TOL = 0.01  # load shares within [−LS_TOL, 1 + LS_TOL] are accepted and clipped to [0, 1]
+MIN_ROWS = 64  # rows per period of a TCA table (§10.7: N ≥ 64)
+MIN_CONTACT_ROWS = 16  # rows inside the contact of the tabulated pair
+PITCH_TOL = (0.25, 1e-3)  # allowed pitch-to-pitch difference: share of the ripple, share of max |y|
+
+ANGLE_COLUMNS = {"phi_p_deg": math.pi / 180.0, "phi_p_rad": 1.0}  # column name: rad per unit
+MESH_COLUMNS = {"k_m_N_per_m": ("k_m", 1.0), "R_p_mm": ("R_p", 1e-3), "e_0_um": ("e_0", 1e-6)}
+RADIUS_COLUMNS = {"R_x": ("r_px_mm", "r_gx_mm"), "R_y": ("r_py_mm", "r_gy_mm")}
+VELOCITY_COLUMNS = {"up_x": "up_x_m_s", "up_y": "up_y_m_s", "ug_x": "ug_x_m_s", "ug_y": "ug_y_m_s"}
+CONTACT_COLUMNS = ["r_px_mm", "r_py_mm", "r_gx_mm", "r_gy_mm"] + list(VELOCITY_COLUMNS.values())
+DATA_COLUMNS = list(MESH_COLUMNS) + ["ls"] + CONTACT_COLUMNS
+META_KEYS = ("name", "N_p", "N_g", "speed_rpm")
+
+
+class TableError(ValueError):
+    """A TCA table that cannot be imported; the message names file, line, column and value."""
+
+
+# --- fitting shared by the surrogate and the import -------------------------------------------
+
+def fit_gearset(samples, harmonics, contact_harmonics):
+    """Series from uniform samples over one period of each series (NaN out of contact)."""
+    return {key: fit(fill_gaps(y), contact_harmonics if key in CONTACT_SERIES else harmonics)
+            for key, y in samples.items()}
+
+
+def fit_notes(series, checks, where):
+    """Per-series comment: harmonics and the fit error against checks {key: (angle, values)}."""
+    notes = {}
+    for key, s in series.items():
+        err, rel = fit_error(s, *checks[key])
+        scope = " in contact" if key in CONTACT_SERIES else ""
+        notes[key] = (f"{len(s.sin)} harmonics; fit error{scope} at {where}: "
+                      f"max {err:.3g} ({rel:.2g} of max |y|)")
+    return notes
+
+
+# --- surrogate ---------------------------------------------------------------------------------
+
+def surrogate_samples(gs, angle):
+    """All ten series of the surrogate at `angle` (θ for the mesh series, ψ for the pair series)."""
+    samples = {"k_m": sur.k_m(gs, angle), "R_p": sur.R_p(gs, angle), "e_0": sur.e_0(angle),
+               "ls": sur.pair_load_share(gs, angle)}
+    samples.update(sur.pair_contact(gs, angle))
+    return samples
+
+
+def surrogate(set_no, harmonics=HARMONICS, contact_harmonics=CONTACT_HARMONICS):
+    """The gear set `set_no` of the paper's Table 1 through the surrogate TCA."""
+    gs = sur.GearSet(sur.TABLE_1[set_no])
+    series = fit_gearset(surrogate_samples(gs, grid()), harmonics, contact_harmonics)
+    off_grid = grid() + math.pi / N_SAMPLES
+    checks = {key: (off_grid, y) for key, y in surrogate_samples(gs, off_grid).items()}
+    name = f"Paouris et al. 2016 gear set {set_no} ({gs.blank.N_p}/{gs.blank.N_g}), surrogate TCA"
+    comments = _surrogate_comments(set_no, gs, harmonics, contact_harmonics)
+    notes = fit_notes(series, checks, f"{N_SAMPLES} off-grid points vs the unfitted surrogate")
+    return Gearset(name, gs.blank.N_p, gs.blank.N_g, series, comments, notes)
+
+
+def _surrogate_comments(set_no, gs, harmonics, contact_harmonics):
+    bl, deg, mm = gs.blank, math.degrees, 1e3
+    return [
+        f"Gear set {set_no} of Paouris et al., PMC 2016, Table 1, through the surrogate tooth contact",
+        f"analysis of physics.md §10. Written by `hypoid tca surrogate` (hypoid {__version__}):",
+        "regenerate with `hypoid tca surrogate --all --out-dir resources/gearsets`, do not edit.",
+        "Units SI (m, N/m, rad); series format in docs/data-files.md.",
+        "",
+        f"Table 1: N {bl.N_p}/{bl.N_g}; face width {bl.b_1 * mm:.2f}/{bl.b_2 * mm:.2f} mm; "
+        f"pitch = face angle {deg(bl.delta_1):.2f}/{deg(bl.delta_2):.2f} deg;",
+        f"  mean spiral angle {deg(bl.beta_m1):.2f}/{deg(bl.beta_m2):.2f} deg; outer cone distance "
+        f"{bl.R_e1 * mm:.2f}/{bl.R_e2 * mm:.2f} mm; offset {bl.a * mm:.1f} mm",
+        f"Blank (§10.1): zeta_mp {deg(gs.zeta_mp):.2f} deg, zeta_m {deg(gs.zeta_m):.2f} deg, "
+        f"r_m1/r_m2 {gs.r_m1 * mm:.2f}/{gs.r_m2 * mm:.2f} mm,",
+        f"  R_m1/R_m2 {gs.R_m1 * mm:.2f}/{gs.R_m2 * mm:.2f} mm, m_mn {gs.m_mn * mm:.3f} mm",
+        f"ISO 10300 virtual gears (§10.2): alpha_lim {deg(gs.alpha_lim):.2f} deg, alpha_nD "
+        f"{deg(gs.alpha_nD):.2f} deg, beta_v {deg(gs.beta_v):.2f} deg,",
+        f"  beta_vb {deg(gs.beta_vb):.2f} deg, beta_B {deg(gs.beta_B):.2f} deg, eps_va "
+        f"{gs.eps_va:.3f}, eps_vb {gs.eps_vb:.3f}, eps_vg {gs.eps_vg:.3f},",
+        f"  b_v,eff {gs.b_veff * mm:.2f} mm, rho_t/rho_rel {gs.rho_t * mm:.2f}/"
+        f"{gs.rho_rel * mm:.2f} mm, ISO normal stiffness k_n {gs.k_n:.3g} N/m (upper bound)",
+        f"Lever arms (§8.2): R_p0/R_g0 {gs.R_p0 * mm:.3f}/{gs.R_p0 * gs.u * mm:.3f} mm; "
+        f"k_m0 {gs.k_m0:.4g} N/m from k_m0 R_p0^2 = {sur.KM_RP2:.3g} N m/rad (§8.4)",
+        f"Path (§10.4, §10.5): eps_TCA {gs.eps_TCA:.3f}, roll s {gs.s_roll[0] * mm:.2f} .. "
+        f"{gs.s_roll[1] * mm:.2f} mm, R_y {gs.R_y:.3f} m",
+        f"Assumed: alpha_e 20 deg, h_mw 2 m_mn split 70/30 %, b_2,eff 0.85 b_2, bump sin^2(pi xi), "
+        f"lengthwise travel {sur.TRAVEL} b_2,",
+        f"  ease-off {sur.DELTA_END * 1e6:.0f} um, e_0 = {sur.E0_SIN[0] * 1e6} um sin(theta) + "
+        f"{sur.E0_SIN[1] * 1e6} um sin(2 theta)",
+        f"Fit (§10.7): {N_SAMPLES} samples per period, {harmonics} harmonics for k_m, R_p, e_0, ls "
+        f"and {contact_harmonics} for the contact series,",
+        "  which are bridged outside contact by a C2 quintic (see each series for its fit error);",
+        "  trailing harmonics that are exactly zero are not written.",
+    ]
+
+
+# --- TCA table: reading and checks ---------------------------------------------------------------
+
+@dataclass
+class Table:
+    """A parsed TCA table: metadata {key: (line, text)}, angle column, rows (NaN = blank cell)."""
+
+    path: str
+    meta: dict
+    angle: str
+    lines: np.ndarray
+    columns: dict
+
+
+def _fail(table_or_path, line, column, value, problem):
+    path = getattr(table_or_path, "path", table_or_path)
+    where = f", line {line}" if line else ""
+    where += f", column '{column}'" if column else ""
+    where += f", value {value!r}" if value is not None else ""
+    raise TableError(f"{path}{where}: {problem}")
+
+
+def read_table(path):
+    """Parses a TCA table (docs/tca-import.md); checks cells, not physics."""
+    with open(path, newline="", encoding="utf-8") as f:
+        rows = [(reader_line, [c.strip() for c in row])
+                for reader_line, row in _csv_rows(csv.reader(f))]
+    header_at = next((i for i, (_, row) in enumerate(rows) if row[0] in ANGLE_COLUMNS), None)
+    if header_at is None:
+        _fail(path, None, None, None, f"no column header row starting with {' or '.join(ANGLE_COLUMNS)}")
+    meta = _read_meta(path, rows[:header_at])
+    line, header = rows[header_at]
+    _check_header(path, line, header)
+    data = rows[header_at + 1:]
+    lines = np.array([ln for ln, _ in data], dtype=int)
+    columns = {name: np.array([_cell(path, ln, name, row, header) for ln, row in data])
+               for name in header}
+    return Table(path, meta, header[0], lines, columns)
+
+
+def _csv_rows(reader):
+    """(line, cells) of the rows that are neither blank nor comments ('#' in the first cell)."""
+    for row in reader:
+        if any(c.strip() for c in row) and not row[0].strip().startswith("#"):
+            yield reader.line_num, row
+
+
+def _read_meta(path, rows):
+    meta = {}
+    for line, row in rows:
+        key, values = row[0], [c for c in row[1:] if c]
+        if key not in META_KEYS:
+            _fail(path, line, None, key, f"unknown metadata key (known: {', '.join(META_KEYS)})")
+        if len(values) != 1 or key in meta:
+            _fail(path, line, None, key, "metadata needs one row 'key,value' per key")
+        meta[key] = (line, values[0])
+    return meta
+
+
+def _check_header(path, line, header):
+    expected = set(DATA_COLUMNS)
+    missing = [c for c in DATA_COLUMNS if c not in header]
+    unknown = [c for c in header[1:] if c not in expected]
+    duplicate = sorted({c for c in header if header.count(c) > 1})
+    for names, problem in ((missing, "missing column(s)"), (unknown, "unknown column(s)"),
+                           (duplicate, "duplicate column(s)")):
+        if names:
+            _fail(path, line, None, None, f"{problem} {', '.join(names)}; the columns are "
+                  f"{' or '.join(ANGLE_COLUMNS)}, {', '.join(DATA_COLUMNS)}")
+
+
+def _cell(path, line, name, row, header):
+    """The number in column `name` of a data row; NaN for a blank cell (allowed only for pair data)."""
+    if len(row) != len(header):
+        _fail(path, line, None, None, f"row has {len(row)} cells, the header {len(header)}")
+    text = row[header.index(name)]
+    if not text:
+        if name in ANGLE_COLUMNS or name in MESH_COLUMNS:
+            _fail(path, line, name, text, "blank cell; only ls and contact data may be blank")
+        return math.nan
+    try:
+        value = float(text)
+    except ValueError:
+        _fail(path, line, name, text, "not a number")
+    if math.isnan(value):
+        _fail(path, line, name, text, "NaN is not allowed; leave cells out of contact blank")
+    if math.isinf(value):
+        _fail(path, line, name, text, "not a finite number")
+    return value
+
+
+@dataclass
+class Checked:
+    """A TCA table after the checks: one period of rows, SI units, pair-1 argument ψ."""
+
+    path: str
+    name: str
+    N_p: int
+    N_g: int
+    speed_rpm: float
+    psi: np.ndarray  # ψ = N_p φ_p / 3 of each row [rad]
+    lines: np.ndarray
+    values: dict  # series key -> row values in SI (NaN out of contact)
+
+
+def check_table(table, speed_rpm=None, harmonics=HARMONICS, contact_harmonics=CONTACT_HARMONICS):
+    """Checks a parsed table and converts it to SI; raises TableError naming file/line/column/value."""
+    N_p, N_g = (_meta_int(table, key) for key in ("N_p", "N_g"))
+    if N_g < N_p:
+        _fail(table, table.meta["N_g"][0], None, N_g, f"N_g is smaller than N_p = {N_p}")
+    speed = _speed(table, speed_rpm)
+    rows = _one_period(table, N_p, max(MIN_ROWS, 3 * (2 * harmonics + 1), 2 * contact_harmonics + 1))
+    cols = {name: v[rows] for name, v in table.columns.items()}
+    lines = table.lines[rows]
+    _check_positive(table, lines, cols, ("k_m_N_per_m", "R_p_mm"), "must be positive")
+    values = {key: cols[name] * scale for name, (key, scale) in MESH_COLUMNS.items()}
+    values["ls"] = _load_share(table, lines, cols)
+    omega_p = speed * math.pi / 30.0  # [rad/s]
+    values.update(_contact(table, lines, cols, omega_p, omega_p * N_p / N_g))
+    psi = N_p * ANGLE_COLUMNS[table.angle] * cols[table.angle] / 3.0
+    name = table.meta.get("name", (0, os.path.splitext(os.path.basename(table.path))[0]))[1]
+    return Checked(table.path, name, N_p, N_g, speed, psi, lines, values)
+
+
+def _meta_int(table, key):
+    if key not in table.meta:
+        _fail(table, None, None, None, f"missing metadata row '{key},<value>' before the header")
+    line, text = table.meta[key]
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (value >= 1 and value == int(value)):
+        _fail(table, line, None, text, f"{key} must be a positive integer")
+    return int(value)
+
+
+def _speed(table, speed_rpm):
+    """Pinion speed of the velocity columns [rpm]: --speed-rpm, else the table's speed_rpm row."""
+    if speed_rpm is not None:
+        line, text = None, str(speed_rpm)
+    elif "speed_rpm" in table.meta:
+        line, text = table.meta["speed_rpm"]
+    else:
+        _fail(table, None, None, None, "no pinion speed: give a 'speed_rpm,<value>' row or --speed-rpm")
+    try:
+        speed = float(text)
+    except ValueError:
+        speed = math.nan
+    if not (math.isfinite(speed) and speed > 0):
+        _fail(table, line, "speed_rpm", text, "the pinion speed must be a positive number [rpm]")
+    return speed
+
+
+def _one_period(table, N_p, min_rows):
+    """Indices of the rows in [φ_0, φ_0 + P), P = 3 angular pitches; checks order, span and count."""
+    to_rad = ANGLE_COLUMNS[table.angle]
+    phi = table.columns[table.angle] * to_rad
+    period = 6.0 * math.pi / N_p
+    if len(phi) < 2:
+        _fail(table, None, None, None, f"too few rows ({len(phi)}); at least {min_rows} per period")
+    step = np.diff(phi)
+    if (step <= 0).any():
+        i = int(np.argmax(step <= 0)) + 1
+        _fail(table, table.lines[i], table.angle, table.columns[table.angle][i],
+              "angles must increase strictly from row to row")
+    rows = np.flatnonzero(phi - phi[0] < period * (1.0 - 1e-9))
+    gap = phi[0] + period - phi[rows[-1]]
+    if gap > 1.5 * step[: max(len(rows) - 1, 1)].max() + 1e-12:
+        _fail(table, table.lines[rows[-1]], table.angle, table.columns[table.angle][rows[-1]],
+              f"the angles span {(phi[rows[-1]] - phi[0]) / to_rad:.6g} but one period is 3 angular "
+              f"pitches = {period / to_rad:.6g} ({table.angle}, N_p = {N_p}); the table must cover it "
+              f"up to about one step")
+    if len(rows) < min_rows:
+        _fail(table, None, None, None, f"too few rows in one period: {len(rows)}, need {min_rows} "
+              "(at least 64, and more than twice the harmonics per period)")
+    return rows
+
+
+def _check_positive(table, lines, cols, names, problem):
+    for name in names:
+        bad = np.flatnonzero(~(cols[name] > 0))
+        if len(bad):
+            _fail(table, lines[bad[0]], name, cols[name][bad[0]], problem)
+
+
+def _load_share(table, lines, cols):
+    ls = np.nan_to_num(cols["ls"], nan=0.0)  # blank = 0
+    bad = np.flatnonzero((ls < -LS_TOL) | (ls > 1.0 + LS_TOL))
+    if len(bad):
+        _fail(table, lines[bad[0]], "ls", ls[bad[0]], f"load share outside [0, 1] by more than {LS_TOL}")
+    return np.clip(ls, 0.0, 1.0)
+
+
+def _contact(table, lines, cols, omega_p, omega_g):
+    """Reduced radii [m] and velocities per unit speed of the contact rows (NaN elsewhere)."""
+    given = np.stack([~np.isnan(cols[c]) for c in CONTACT_COLUMNS])
+    partial = np.flatnonzero(given.any(axis=0) & ~given.all(axis=0))
+    if len(partial):
+        r = partial[0]
+        _fail(table, lines[r], CONTACT_COLUMNS[int(np.argmin(given[:, r]))], "",
+              "blank while other contact columns of the row are given")
+    inside = given[0]
+    loaded = np.flatnonzero(~inside & (np.nan_to_num(cols["ls"]) > LS_TOL))
+    if len(loaded):
+        _fail(table, lines[loaded[0]], CONTACT_COLUMNS[0], "",
+              f"blank contact data but ls = {cols['ls'][loaded[0]]:g} > 0")
+    _check_arc(table, lines, inside)
+    values = {key: _reduced_radius(table, lines, cols, pair) for key, pair in RADIUS_COLUMNS.items()}
+    bad = np.flatnonzero(values["R_x"] > values["R_y"])
+    if len(bad):
+        _fail(table, lines[bad[0]], "r_px_mm", cols["r_px_mm"][bad[0]],
+              "R_x > R_y: x must be the minor axis of the contact ellipse (larger curvature)")
+    for key, name in VELOCITY_COLUMNS.items():
+        values[key] = cols[name] / (omega_p if key.startswith("up") else omega_g)
+    return values
+
+
+def _check_arc(table, lines, inside):
+    """The tabulated pair's contact rows must form one cyclic range of enough rows."""
+    if inside.all():
+        return
+    starts = np.flatnonzero(inside & ~np.roll(inside, 1))
+    runs = len(starts)
+    if runs != 1:
+        _fail(table, lines[starts[-1]] if runs else None, None, None,
+              "the tabulated pair must be in contact over one range of angles "
+              f"(found {runs}); leave its contact cells blank only out of contact")
+    if inside.sum() < MIN_CONTACT_ROWS:
+        _fail(table, None, None, None,
+              f"too few rows in contact: {inside.sum()}, need {MIN_CONTACT_ROWS}")
+
+
+def _reduced_radius(table, lines, cols, pair):
+    r_p, r_g = cols[pair[0]], cols[pair[1]]
+    for name in pair:
+        zero = np.flatnonzero(cols[name] == 0)
+        if len(zero):
+            _fail(table, lines[zero[0]], name, 0.0, "a radius of curvature cannot be zero")
+    with np.errstate(divide="ignore", invalid="ignore"):
+        R = 1e-3 * sur.reduced(r_p, r_g)
+    bad = np.flatnonzero(~np.isnan(r_p) & ~(R > 0))
+    if len(bad):
+        i = bad[0]
+        _fail(table, lines[i], pair[0], r_p[i],
+              f"with {pair[1]} = {r_g[i]:g} the reduced radius is not positive "
+              "(radii are signed: convex > 0, concave < 0)")
+    return R
+
+
+# --- TCA table: fit ----------------------------------------------------------------------------
+
+def table_samples(checked):
+    """Uniform samples for fit_gearset and checks {key: (angle, row values)} for fit_notes."""
+    n = N_SAMPLES
+    samples, checks = {}, {}
+    for key in MESH_SERIES:
+        three = resample(checked.psi, checked.values[key], 3 * n).reshape(3, n)
+        samples[key] = three.mean(axis=0)  # the three pitches averaged: one mesh cycle in θ
+        _check_pitch(checked, key, three)
+        checks[key] = (3.0 * checked.psi, checked.values[key])
+    for key in PAIR_SERIES:
+        samples[key] = resample(checked.psi, checked.values[key], n)
+        checks[key] = (checked.psi, checked.values[key])
+    return samples, checks
+
+
+def _check_pitch(checked, key, three):
+    """Mesh quantities must repeat every angular pitch, else N_p does not fit the table."""
+    mean = three.mean(axis=0)
+    diff = np.abs(three - mean).max()
+    allowed = PITCH_TOL[0] * np.ptp(mean) + PITCH_TOL[1] * np.abs(mean).max()
+    if diff > allowed:
+        column = next(c for c, (k, _) in MESH_COLUMNS.items() if k == key)
+        _fail(checked.path, None, column, None,
+              f"does not repeat every angular pitch 360/N_p deg with N_p = {checked.N_p} "
+              f"(pitch-to-pitch difference {diff:.3g} SI, allowed {allowed:.3g}); check N_p")
+
+
+def import_table(path, speed_rpm=None, harmonics=HARMONICS, contact_harmonics=CONTACT_HARMONICS,
+                 name=None):
+    """A Gearset from the user's TCA table at `path` (docs/tca-import.md)."""
+    checked = check_table(read_table(path), speed_rpm, harmonics, contact_harmonics)
+    samples, checks = table_samples(checked)
+    series = fit_gearset(samples, harmonics, contact_harmonics)
+    comments = [
+        f"Imported from the TCA table {os.path.basename(path)} by `hypoid tca import` "
+        f"(hypoid {__version__}); format docs/tca-import.md.",
+        f"Pinion speed of the tabulated velocities {checked.speed_rpm:g} rpm; "
+        f"{len(checked.lines)} rows over one period (3 angular pitches).",
+        f"Fit (physics.md §10.7): resampled to {N_SAMPLES} points per period (cubic splines), "
+        f"{harmonics} harmonics for k_m, R_p, e_0, ls",
+        f"  and {contact_harmonics} for the contact series, bridged outside contact by a C2 quintic.",
+        "Units SI (m, N/m, rad); series format in docs/data-files.md.",
+    ]
+    notes = fit_notes(series, checks, "the table rows")
+    return Gearset(name or checked.name, checked.N_p, checked.N_g, series, comments, notes)
+
+
+# --- surrogate as a TCA table ---------------------------------------------------------------------
+
+def export_csv(set_no, path, speed_rpm=2000.0, rows=360):
+    """Writes the surrogate of gear set `set_no` as a TCA table (one period, `rows` rows)."""
+    gs = sur.GearSet(sur.TABLE_1[set_no])
+    N_p, N_g = gs.blank.N_p, gs.blank.N_g
+    phi = np.arange(rows) * (6.0 * math.pi / N_p) / rows  # pinion angle [rad]
+    theta = N_p * phi
+    psi = theta / 3.0
+    omega_p = speed_rpm * math.pi / 30.0
+    s, inside = sur.pair_roll(gs, psi)
+    omega_g = omega_p * N_p / N_g
+    r_px, r_gx = sur.x_radii(gs, s)
+    r_y = np.full_like(s, 2e3 * gs.R_y)  # [mm]
+    (up_x, up_y), (ug_x, ug_y) = sur.surface_velocities(gs, s)
+    contact = {"r_px_mm": r_px * 1e3, "r_py_mm": r_y, "r_gx_mm": r_gx * 1e3, "r_gy_mm": r_y,
+               "up_x_m_s": up_x * omega_p, "up_y_m_s": up_y * omega_p,
+               "ug_x_m_s": ug_x * omega_g, "ug_y_m_s": ug_y * omega_g}
+    columns = {"phi_p_deg": np.degrees(phi), "k_m_N_per_m": sur.k_m(gs, theta),
+               "R_p_mm": sur.R_p(gs, theta) * 1e3, "e_0_um": sur.e_0(theta) * 1e6,
+               "ls": sur.pair_load_share(gs, psi)}
+    columns.update({name: np.where(inside, v, np.nan) for name, v in contact.items()})
+    with open(path, "w", newline="", encoding="utf-8") as f:
+        f.write(f"# Gear set {set_no} of the paper's Table 1: surrogate TCA of physics.md §10\n"
+                f"# written by `hypoid tca export-csv` (hypoid {__version__}).\n"
+                "# r_py_mm = r_gy_mm = 2 R_y: the surrogate defines only the reduced radius R_y.\n")
+        out = csv.writer(f, lineterminator="\n")
+        for key, value in (("name", f"Gear set {set_no} surrogate (exported table)"), ("N_p", N_p),
+                           ("N_g", N_g), ("speed_rpm", f"{speed_rpm:g}")):
+            out.writerow([key, value])
+        header = ["phi_p_deg"] + DATA_COLUMNS
+        out.writerow(header)
+        for row in np.array([columns[name] for name in header]).T:
+            out.writerow(["" if math.isnan(v) else f"{v:.10g}" for v in row])
+
+
+# --- command line --------------------------------------------------------------------------------
+
+def _parser():
+    p = argparse.ArgumentParser(prog="hypoid tca", description=__doc__.split("\n\n")[0])
+    sub = p.add_subparsers(dest="command", required=True)
+    s = sub.add_parser("surrogate", help="gear-set files of the paper's sets 1-3 (physics.md §10)")
+    which = s.add_mutually_exclusive_group(required=True)
+    which.add_argument("--set", type=int, choices=sorted(sur.TABLE_1), help="gear set of Table 1")
+    which.add_argument("--all", action="store_true", help="all three sets")
+    s.add_argument("--out", help="output file (with --set)")
+    s.add_argument("--out-dir", help="output directory (with --all): gearset1.txt ...")
+    i = sub.add_parser("import", help="gear-set file from a TCA table (docs/tca-import.md)")
+    i.add_argument("table", help="CSV table")
+    i.add_argument("--out", required=True, help="output gear-set file")
+    i.add_argument("--speed-rpm", type=float, help="pinion speed of the velocity columns [rpm]")
+    i.add_argument("--name", help="name written into the gear-set file")
+    for q in (s, i):
+        q.add_argument("--harmonics", type=int, default=HARMONICS, help="for k_m, R_p, e_0, ls")
+        q.add_argument("--contact-harmonics", type=int, default=CONTACT_HARMONICS,
+                       help="for R_x, R_y, up_x, up_y, ug_x, ug_y")
+    e = sub.add_parser("export-csv", help="the surrogate of a gear set as a TCA table")
+    e.add_argument("--set", type=int, choices=sorted(sur.TABLE_1), required=True)
+    e.add_argument("--out", required=True)
+    e.add_argument("--speed-rpm", type=float, default=2000.0)
+    e.add_argument("--rows", type=int, default=360, help="rows over one period (3 angular pitches)")
+    return p
+
+
+def _run(args):
+    if args.command == "export-csv":
+        export_csv(args.set, args.out, args.speed_rpm, args.rows)
+        print(f"wrote {args.out}")
+        return
+    for n in (args.harmonics, args.contact_harmonics):
+        if not 0 <= n <= MAX_HARMONICS:
+            raise ValueError(f"harmonics must be 0..{MAX_HARMONICS}, not {n}")
+    if args.command == "import":
+        jobs = [(args.out, import_table(args.table, args.speed_rpm, args.harmonics,
+                                        args.contact_harmonics, args.name))]
+    elif args.all:
+        if not args.out_dir:
+            raise ValueError("--all needs --out-dir")
+        jobs = [(os.path.join(args.out_dir, f"gearset{n}.txt"),
+                 surrogate(n, args.harmonics, args.contact_harmonics)) for n in sorted(sur.TABLE_1)]
+    else:
+        if not args.out:
+            raise ValueError("--set needs --out")
+        jobs = [(args.out, surrogate(args.set, args.harmonics, args.contact_harmonics))]
+    for path, gearset in jobs:
+        write_gearset(path, gearset)
+        print(f"wrote {path}")
+        for key in MESH_SERIES + PAIR_SERIES:
+            print(f"  {key:5} [{UNITS[key]}] {gearset.notes[key]}")
+
+
+def main(argv):
+    try:
+        args = _parser().parse_args(argv)
+    except SystemExit as stop:  # --help or a usage error, already printed by argparse
+        return stop.code
+    try:
+        _run(args)
+    except (ValueError, OSError) as err:
+        print(f"hypoid tca: error: {err}", file=sys.stderr)
+        return 2
+    return 0
