@@ -1,0 +1,95 @@
+/* Gear-set files: the built-in set 1 against physics.md 10.7, and clear errors for bad files. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "check.h"
+#include "io/datafile.h"
+#include "model/gearset.h"
+
+#define TWO_PI 6.283185307179586
+
+static void builtin_set1(void)
+{
+    hg_gearset g;
+    char err[HG_ERRLEN] = "";
+    int j, k;
+    CHECK(hg_gearset_load("resources/gearsets/gearset1.txt", &g, err, sizeof err) == 0);
+    if (err[0]) fprintf(stderr, "%s\n", err);
+    CHECK(g.N_p == 13 && g.N_g == 36);
+    CHECK_CLOSE(g.k_m.mean, 1.7111e8, 1e-3, 0.0);  /* physics 10.7 */
+    CHECK_CLOSE(g.R_p.mean, 21.009e-3, 1e-4, 0.0);
+    CHECK_CLOSE(g.ls.mean, 1.0 / 3.0, 1e-9, 0.0);
+    CHECK_CLOSE(g.e_0.s[0], 1.5e-6, 1e-9, 0.0);
+    for (j = 0; j < 997; j++) { /* off any fitting grid */
+        double theta = 3.0 * TWO_PI * j / 997.0, sum = 0.0, in_contact = 0;
+        hg_pair_geometry p;
+        hg_mesh_point m;
+        hg_gearset_pairs(&g, theta, 1, &p);
+        hg_gearset_mesh(&g, theta, &m);
+        for (k = 0; k < HG_MAX_PAIRS; k++) {
+            CHECK(p.ls[k] >= 0.0 && p.ls[k] <= 1.0);
+            sum += p.ls[k];
+            in_contact += p.ls[k] > 0.0;
+        }
+        CHECK_CLOSE(sum, 1.0, 1e-12, 0.0);
+        CHECK(in_contact >= 2 && in_contact <= 3); /* eps_TCA = 2.52: two or three pairs */
+        CHECK(fabs(m.k_m / 1.7111e8 - 1.0) < 0.06);  /* about +-4.6 % ripple */
+    }
+}
+
+static void write_file(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    fputs(text, f);
+    fclose(f);
+}
+
+/* A minimal valid file with one line replaced by `line` (or appended when key not found). */
+static void expect_error(const char *replace_key, const char *line, const char *want)
+{
+    static const char *const base[] = {
+        "hypoid-gearset 1\n", "name test\n", "N_p 13\n", "N_g 36\n", "k_m.mean 1.7e8\n",
+        "k_m.sin 1e6\n", "k_m.cos 0\n", "R_p.mean 0.021\n", "R_p.sin\n", "R_p.cos\n",
+        "e_0.mean 0\n", "e_0.sin 1e-6\n", "e_0.cos 0\n", "ls.mean 0.3333333333333333\n",
+        "ls.sin 0.4\n", "ls.cos 0\n", "R_x.mean 0.018\n", "R_x.sin\n", "R_x.cos\n",
+        "R_y.mean 2.25\n", "R_y.sin\n", "R_y.cos\n", "up_x.mean 0.012\n", "up_x.sin\n",
+        "up_x.cos\n", "up_y.mean 0.02\n", "up_y.sin\n", "up_y.cos\n", "ug_x.mean 0.03\n",
+        "ug_x.sin\n", "ug_x.cos\n", "ug_y.mean 0.03\n", "ug_y.sin\n", "ug_y.cos\n"};
+    char text[4096] = "", err[HG_ERRLEN] = "";
+    const char *path = "/tmp/hg_test_gearset.txt";
+    size_t i;
+    hg_gearset g;
+    for (i = 0; i < sizeof base / sizeof base[0]; i++) {
+        if (replace_key && strncmp(base[i], replace_key, strlen(replace_key)) == 0 &&
+            base[i][strlen(replace_key)] == ' ')
+            strcat(text, line);
+        else
+            strcat(text, base[i]);
+    }
+    if (!replace_key) strcat(text, line);
+    write_file(path, text);
+    CHECK(hg_gearset_load(path, &g, err, sizeof err) != 0);
+    if (!strstr(err, want)) fprintf(stderr, "error '%s' lacks '%s'\n", err, want);
+    CHECK(strstr(err, want) != NULL);
+}
+
+int main(void)
+{
+    char err[HG_ERRLEN];
+    hg_gearset g;
+    builtin_set1();
+    /* the minimal file itself is valid */
+    expect_error(NULL, "extra_key 1\n", "unknown key 'extra_key'");
+    expect_error("N_p", "N_p 13.5\n", "not a whole number");
+    expect_error("N_g", "N_g 0\n", "outside [3, 200]");
+    expect_error("k_m.cos", "k_m.cos 0 0\n", "1 sine but 2 cosine");
+    expect_error("k_m.mean", "k_m.mean -1e8\n", "k_m evaluates to");
+    expect_error("R_p.mean", "R_p.mean nan\n", "not a finite number");
+    expect_error("ls.mean", "ls.mean 0.5\n", "load shares of the three pairs sum to");
+    expect_error("R_x.mean", "R_x.mean -0.01\n", "R_x evaluates to");
+    expect_error("ug_y.mean", "# gone\n", "missing key 'ug_y.mean'");
+    CHECK(hg_gearset_load("/tmp/does-not-exist.txt", &g, err, sizeof err) != 0);
+    CHECK(strstr(err, "cannot open") != NULL);
+    CHECK_DONE();
+}
