@@ -7,7 +7,9 @@ import shutil
 import numpy as np
 import pytest
 from fmpy import extract, read_model_description
-from fmpy.fmi2 import FMU2Slave, fmi2OK
+from fmpy import free, calloc
+from fmpy.fmi2 import (FMU2Slave, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE,
+                       fmi2CallbackFunctions, fmi2CallbackLoggerTYPE)
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 FMU_PATH = ROOT / "build" / "HypoidGearPair.fmu"
@@ -42,12 +44,16 @@ class Harness:
         self.messages = []
         self.fmu = FMU2Slave(guid=md.guid, unzipDirectory=str(unzipped),
                              modelIdentifier=md.coSimulation.modelIdentifier, instanceName=name)
-        self.fmu.instantiate(loggingOn=logging, logger=self._log)
+        self.callbacks = fmi2CallbackFunctions()
+        self.callbacks.logger = fmi2CallbackLoggerTYPE(self._log)
+        self.callbacks.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
+        self.callbacks.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
+        self.fmu.instantiate(loggingOn=logging, callbacks=self.callbacks)
         self.t = 0.0
         self.freed = False
 
     def _log(self, component, instance, status, category, message):
-        self.messages.append((status, category.decode(), message.decode()))
+        self.messages.append((status, category.decode(), message.decode().replace("%%", "%")))
 
     def set(self, **values):
         for name, value in values.items():
@@ -83,8 +89,7 @@ class Harness:
         rows = []
         n = int(round((t_end - self.t) / h))
         for _ in range(n):
-            status = self.fmu.doStep(currentCommunicationPoint=self.t, communicationStepSize=h)
-            assert status == fmi2OK
+            self.fmu.doStep(currentCommunicationPoint=self.t, communicationStepSize=h)
             self.t += h
             rows.append(self.fmu.getReal([self.vr[x] for x in names]))
         return np.array(rows)

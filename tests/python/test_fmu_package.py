@@ -1,0 +1,81 @@
+"""The FMU as a package: model description, exported symbols, run-time dependencies, and the
+variable table that must not drift from the modelDescription."""
+
+import pathlib
+import re
+import subprocess
+import zipfile
+
+from fmpy.validation import validate_fmu
+
+from conftest import ROOT
+
+
+def test_validate_finds_nothing(fmu_path):
+    assert validate_fmu(str(fmu_path)) == []
+
+
+def test_archive_layout(fmu_path):
+    names = set(zipfile.ZipFile(fmu_path).namelist())
+    assert "modelDescription.xml" in names
+    assert "binaries/linux64/HypoidGearPair.so" in names
+    for k in (1, 2, 3):
+        assert f"resources/gearsets/gearset{k}.txt" in names
+
+
+def test_only_fmi2_symbols_exported(unzipped):
+    so = pathlib.Path(unzipped) / "binaries" / "linux64" / "HypoidGearPair.so"
+    out = subprocess.run(["nm", "-D", "--defined-only", str(so)], check=True,
+                         capture_output=True, text=True).stdout
+    symbols = [line.split()[-1] for line in out.splitlines() if line.strip()]
+    assert symbols, "no exported symbols at all"
+    assert [s for s in symbols if not s.startswith("fmi2")] == []
+    for required in ("fmi2Instantiate", "fmi2DoStep", "fmi2GetFMUstate",
+                     "fmi2SerializeFMUstate", "fmi2SetRealInputDerivatives", "fmi2Reset"):
+        assert required in symbols
+
+
+def test_depends_on_libc_and_libm_only(unzipped):
+    so = pathlib.Path(unzipped) / "binaries" / "linux64" / "HypoidGearPair.so"
+    out = subprocess.run(["ldd", str(so)], check=True, capture_output=True, text=True).stdout
+    libs = [line.split()[0] for line in out.splitlines() if line.strip()]
+    allowed = re.compile(r"^(linux-vdso\.so\.1|libc\.so\.6|libm\.so\.6|/lib64/ld-linux-x86-64\.so\.2)$")
+    assert [lib for lib in libs if not allowed.match(lib)] == []
+    undefined = subprocess.run(["nm", "-D", "--undefined-only", str(so)], check=True,
+                               capture_output=True, text=True).stdout
+    assert "sundials" not in undefined.lower() and "CVode" not in undefined
+
+
+def test_capabilities(model_description):
+    cs = model_description.coSimulation
+    assert cs.canHandleVariableCommunicationStepSize
+    assert cs.canGetAndSetFMUstate and cs.canSerializeFMUstate
+    assert cs.canInterpolateInputs
+    assert not cs.canBeInstantiatedOnlyOncePerProcess
+    cats = {c for c, _ in model_description.logCategories} if model_description.logCategories \
+        and isinstance(model_description.logCategories[0], tuple) else \
+        {getattr(c, "name", c) for c in model_description.logCategories}
+    assert {"logEvents", "logStatusWarning", "logStatusError", "logAll"} <= cats
+
+
+def test_contract_variables_present(model_description):
+    """The names, causalities and units of the interface contract (shared/spec)."""
+    by_name = {v.name: v for v in model_description.modelVariables}
+    for name in ("T_s", "T_w", "T_bath", "w_set"):
+        assert by_name[name].causality == "input"
+    outputs = ["w_s", "w_p", "w_g", "w_w", "DTE", "W_t", "T_fp", "T_fg", "P_loss", "eta",
+               "eta_cycle", "T_w_out"]
+    outputs += [f"pair[{k}].{q}" for k in (1, 2, 3) for q in
+                ("W", "h_c", "lambda", "mu", "F_v", "F_b", "T_c", "u_e", "V_s", "R_e", "R_s", "p_h")]
+    for name in outputs:
+        assert by_name[name].causality == "output", name
+    assert by_name["w_p"].unit == "rad/s" and by_name["w_p"].displayUnit == "rpm"
+    assert by_name["T_bath"].unit == "K" and by_name["T_bath"].displayUnit == "degC"
+    assert by_name["DTE"].unit == "m" and by_name["DTE"].displayUnit == "um"
+    assert by_name["T_s"].start == "100.0"
+
+
+def test_readme_variable_table_is_current():
+    """README's table is generated from variables.toml, the source of the XML and the C table."""
+    subprocess.run(["python3", str(ROOT / "modelDescription" / "generate.py"), "--readme",
+                    str(ROOT / "README.md"), "--check"], check=True)
