@@ -128,6 +128,7 @@ def _series(path, entries, key):
     if len(mean) != 1:
         raise GearsetFileError(f"{path}: '{key}.mean' must have exactly one value")
     if len(sin) != len(cos) or len(sin) > MAX_HARMONICS:
-        raise GearsetFileError(f"{path}, lines {line_s}/{line_c}: '{key}.sin' and '{key}.cos' need "
-                               f"equal counts of at most {MAX_HARMONICS} (have {len(sin)}/{len(cos)})")
+        raise GearsetFileError(f"{path}, lines {line_s}/{line_c}: '{key}.sin' and '{key}.cos' "
+                               f"need equal counts of at most {MAX_HARMONICS} "
+                               f"(have {len(sin)}/{len(cos)})")
     return Series(mean[0], np.array(sin), np.array(cos))

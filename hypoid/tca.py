@@ -1,7 +1,9 @@
 """`hypoid tca`: gear-set files from the surrogate TCA (physics.md §10) or from a user's TCA table.
 
-    hypoid tca surrogate --set N --out FILE | --all --out-dir DIR   [--harmonics 8] [--contact-harmonics 32]
-    hypoid tca import TABLE.csv --out FILE [--speed-rpm RPM] [--name TEXT] [--harmonics 8] [--contact-harmonics 32]
+    hypoid tca surrogate (--set N --out FILE | --all --out-dir DIR)
+                         [--harmonics 8] [--contact-harmonics 32]
+    hypoid tca import TABLE.csv --out FILE [--speed-rpm RPM] [--name TEXT]
+                      [--harmonics 8] [--contact-harmonics 32]
     hypoid tca export-csv --set N --out TABLE.csv [--speed-rpm 2000] [--rows 360]
 
 The table format is documented in docs/tca-import.md, the gear-set format in docs/data-files.md.
@@ -16,15 +18,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from hypoid import __version__
 from hypoid import tca_surrogate as sur
-from hypoid.gearset_file import CONTACT_SERIES, MESH_SERIES, PAIR_SERIES, UNITS, Gearset, write_gearset
+from hypoid.gearset_file import (CONTACT_SERIES, MESH_SERIES, PAIR_SERIES, UNITS, Gearset,
+                                 write_gearset)
 from hypoid.tca_fit import MAX_HARMONICS, N_SAMPLES, fill_gaps, fit, fit_error, grid, resample
 
 HARMONICS = 8  # k_m, R_p, e_0, ls: the paper's eqs. (1)–(4)
 CONTACT_HARMONICS = 32  # R_x … ug_y: with 8, the return across the short no-contact gap leaves
 #                         up to 3 % error in contact (gear set 2); 32 leave at most 0.14 %
 LS_TOL = 0.01  # load shares within [−LS_TOL, 1 + LS_TOL] are accepted and clipped to [0, 1]
+LS_SUM_TOL = 0.05  # the three pairs' shares must sum to 1 within this
 MIN_ROWS = 64  # rows per period of a TCA table (§10.7: N ≥ 64)
 MIN_CONTACT_ROWS = 16  # rows inside the contact of the tabulated pair
 PITCH_TOL = (0.25, 1e-3)  # allowed pitch-to-pitch difference: share of the ripple, share of max |y|
@@ -86,8 +89,8 @@ def surrogate(set_no, harmonics=HARMONICS, contact_harmonics=CONTACT_HARMONICS):
 def _surrogate_comments(set_no, gs, harmonics, contact_harmonics):
     bl, deg, mm = gs.blank, math.degrees, 1e3
     return [
-        f"Gear set {set_no} of Paouris et al., PMC 2016, Table 1, through the surrogate tooth contact",
-        f"analysis of physics.md §10. Written by `hypoid tca surrogate` (hypoid {__version__}):",
+        f"Gear set {set_no} of Paouris et al., PMC 2016, Table 1, through the surrogate tooth",
+        "contact analysis of physics.md §10. Written by `hypoid tca surrogate`:",
         "regenerate with `hypoid tca surrogate --all --out-dir resources/gearsets`, do not edit.",
         "Units SI (m, N/m, rad); series format in docs/data-files.md.",
         "",
@@ -108,8 +111,9 @@ def _surrogate_comments(set_no, gs, harmonics, contact_harmonics):
         f"k_m0 {gs.k_m0:.4g} N/m from k_m0 R_p0^2 = {sur.KM_RP2:.3g} N m/rad (§8.4)",
         f"Path (§10.4, §10.5): eps_TCA {gs.eps_TCA:.3f}, roll s {gs.s_roll[0] * mm:.2f} .. "
         f"{gs.s_roll[1] * mm:.2f} mm, R_y {gs.R_y:.3f} m",
-        f"Assumed: alpha_e 20 deg, h_mw 2 m_mn split 70/30 %, b_2,eff 0.85 b_2, bump sin^2(pi xi), "
-        f"lengthwise travel {sur.TRAVEL} b_2,",
+        f"Assumed: alpha_e {deg(sur.ALPHA_E):g} deg, h_mw {sur.H_MW:g} m_mn with "
+        f"{100 * sur.PINION_DEPTH_SHARE:.0f} % on the pinion, b_2,eff {sur.B2_EFF:g} b_2,",
+        f"  bump sin^2(pi xi), lengthwise travel {sur.TRAVEL:g} b_2,",
         f"  ease-off {sur.DELTA_END * 1e6:.0f} um, e_0 = {sur.E0_SIN[0] * 1e6} um sin(theta) + "
         f"{sur.E0_SIN[1] * 1e6} um sin(2 theta)",
         f"Fit (§10.7): {N_SAMPLES} samples per period, {harmonics} harmonics for k_m, R_p, e_0, ls "
@@ -136,25 +140,31 @@ def _fail(table_or_path, line, column, value, problem):
     path = getattr(table_or_path, "path", table_or_path)
     where = f", line {line}" if line else ""
     where += f", column '{column}'" if column else ""
-    where += f", value {value!r}" if value is not None else ""
+    if value is not None:
+        where += f", value {value!r}" if isinstance(value, str) else f", value {value:g}"
     raise TableError(f"{path}{where}: {problem}")
 
 
 def read_table(path):
     """Parses a TCA table (docs/tca-import.md); checks cells, not physics."""
-    with open(path, newline="", encoding="utf-8") as f:
-        rows = [(reader_line, [c.strip() for c in row])
-                for reader_line, row in _csv_rows(csv.reader(f))]
+    try:
+        with open(path, newline="", encoding="utf-8") as f:
+            rows = [(line, [c.strip() for c in row]) for line, row in _csv_rows(csv.reader(f))]
+    except (csv.Error, UnicodeDecodeError) as err:
+        raise TableError(f"{path}: not a readable CSV text file ({err})") from None
     header_at = next((i for i, (_, row) in enumerate(rows) if row[0] in ANGLE_COLUMNS), None)
     if header_at is None:
-        _fail(path, None, None, None, f"no column header row starting with {' or '.join(ANGLE_COLUMNS)}")
+        _fail(path, None, None, None,
+              f"no column header row starting with {' or '.join(ANGLE_COLUMNS)}")
     meta = _read_meta(path, rows[:header_at])
     line, header = rows[header_at]
+    while not header[-1]:
+        header.pop()  # trailing empty cells of a spreadsheet export
     _check_header(path, line, header)
-    data = rows[header_at + 1:]
+    data = [(ln, _fit_row(path, ln, row, len(header))) for ln, row in rows[header_at + 1:]]
     lines = np.array([ln for ln, _ in data], dtype=int)
-    columns = {name: np.array([_cell(path, ln, name, row, header) for ln, row in data])
-               for name in header}
+    columns = {name: np.array([_cell(path, ln, name, row[i]) for ln, row in data], dtype=float)
+               for i, name in enumerate(header)}
     return Table(path, meta, header[0], lines, columns)
 
 
@@ -189,11 +199,15 @@ def _check_header(path, line, header):
                   f"{' or '.join(ANGLE_COLUMNS)}, {', '.join(DATA_COLUMNS)}")
 
 
-def _cell(path, line, name, row, header):
-    """The number in column `name` of a data row; NaN for a blank cell (allowed only for pair data)."""
-    if len(row) != len(header):
-        _fail(path, line, None, None, f"row has {len(row)} cells, the header {len(header)}")
-    text = row[header.index(name)]
+def _fit_row(path, line, row, n):
+    """A data row padded with blank cells to n cells; extra cells must be blank."""
+    if any(row[n:]):
+        _fail(path, line, None, None, f"row has more cells than the header ({n})")
+    return row[:n] + [""] * (n - len(row))
+
+
+def _cell(path, line, name, text):
+    """The number in a cell of column `name`; NaN for a blank cell (allowed only for pair data)."""
     if not text:
         if name in ANGLE_COLUMNS or name in MESH_COLUMNS:
             _fail(path, line, name, text, "blank cell; only ls and contact data may be blank")
@@ -224,12 +238,13 @@ class Checked:
 
 
 def check_table(table, speed_rpm=None, harmonics=HARMONICS, contact_harmonics=CONTACT_HARMONICS):
-    """Checks a parsed table and converts it to SI; raises TableError naming file/line/column/value."""
+    """Checks a parsed table and converts it to SI; raises TableError naming line, column, value."""
     N_p, N_g = (_meta_int(table, key) for key in ("N_p", "N_g"))
     if N_g < N_p:
         _fail(table, table.meta["N_g"][0], None, N_g, f"N_g is smaller than N_p = {N_p}")
     speed = _speed(table, speed_rpm)
-    rows = _one_period(table, N_p, max(MIN_ROWS, 3 * (2 * harmonics + 1), 2 * contact_harmonics + 1))
+    min_rows = max(MIN_ROWS, 3 * (2 * harmonics + 1), 2 * contact_harmonics + 1)
+    rows = _one_period(table, N_p, min_rows)
     cols = {name: v[rows] for name, v in table.columns.items()}
     lines = table.lines[rows]
     _check_positive(table, lines, cols, ("k_m_N_per_m", "R_p_mm"), "must be positive")
@@ -246,11 +261,8 @@ def _meta_int(table, key):
     if key not in table.meta:
         _fail(table, None, None, None, f"missing metadata row '{key},<value>' before the header")
     line, text = table.meta[key]
-    try:
-        value = float(text)
-    except ValueError:
-        value = math.nan
-    if not (value >= 1 and value == int(value)):
+    value = _to_float(text)
+    if not (math.isfinite(value) and value >= 1 and value.is_integer()):
         _fail(table, line, None, text, f"{key} must be a positive integer")
     return int(value)
 
@@ -262,18 +274,23 @@ def _speed(table, speed_rpm):
     elif "speed_rpm" in table.meta:
         line, text = table.meta["speed_rpm"]
     else:
-        _fail(table, None, None, None, "no pinion speed: give a 'speed_rpm,<value>' row or --speed-rpm")
-    try:
-        speed = float(text)
-    except ValueError:
-        speed = math.nan
+        _fail(table, None, None, None,
+              "no pinion speed: give a 'speed_rpm,<value>' row or --speed-rpm")
+    speed = _to_float(text)
     if not (math.isfinite(speed) and speed > 0):
         _fail(table, line, "speed_rpm", text, "the pinion speed must be a positive number [rpm]")
     return speed
 
 
+def _to_float(text):
+    try:
+        return float(text)
+    except ValueError:
+        return math.nan
+
+
 def _one_period(table, N_p, min_rows):
-    """Indices of the rows in [φ_0, φ_0 + P), P = 3 angular pitches; checks order, span and count."""
+    """Indices of the rows in [φ_0, φ_0 + P), P = 3 angular pitches; checks order, span, count."""
     to_rad = ANGLE_COLUMNS[table.angle]
     phi = table.columns[table.angle] * to_rad
     period = 6.0 * math.pi / N_p
@@ -288,9 +305,9 @@ def _one_period(table, N_p, min_rows):
     gap = phi[0] + period - phi[rows[-1]]
     if gap > 1.5 * step[: max(len(rows) - 1, 1)].max() + 1e-12:
         _fail(table, table.lines[rows[-1]], table.angle, table.columns[table.angle][rows[-1]],
-              f"the angles span {(phi[rows[-1]] - phi[0]) / to_rad:.6g} but one period is 3 angular "
-              f"pitches = {period / to_rad:.6g} ({table.angle}, N_p = {N_p}); the table must cover it "
-              f"up to about one step")
+              f"the angles span {(phi[rows[-1]] - phi[0]) / to_rad:.6g} but one period is 3 "
+              f"angular pitches = {period / to_rad:.6g} ({table.angle}, N_p = {N_p}); the table "
+              "must cover it up to about one step")
     if len(rows) < min_rows:
         _fail(table, None, None, None, f"too few rows in one period: {len(rows)}, need {min_rows} "
               "(at least 64, and more than twice the harmonics per period)")
@@ -308,7 +325,8 @@ def _load_share(table, lines, cols):
     ls = np.nan_to_num(cols["ls"], nan=0.0)  # blank = 0
     bad = np.flatnonzero((ls < -LS_TOL) | (ls > 1.0 + LS_TOL))
     if len(bad):
-        _fail(table, lines[bad[0]], "ls", ls[bad[0]], f"load share outside [0, 1] by more than {LS_TOL}")
+        _fail(table, lines[bad[0]], "ls", ls[bad[0]],
+              f"load share outside [0, 1] by more than {LS_TOL}")
     return np.clip(ls, 0.0, 1.0)
 
 
@@ -326,11 +344,15 @@ def _contact(table, lines, cols, omega_p, omega_g):
         _fail(table, lines[loaded[0]], CONTACT_COLUMNS[0], "",
               f"blank contact data but ls = {cols['ls'][loaded[0]]:g} > 0")
     _check_arc(table, lines, inside)
-    values = {key: _reduced_radius(table, lines, cols, pair) for key, pair in RADIUS_COLUMNS.items()}
+    values = {key: _reduced_radius(table, lines, cols, pair)
+              for key, pair in RADIUS_COLUMNS.items()}
     bad = np.flatnonzero(values["R_x"] > values["R_y"])
     if len(bad):
-        _fail(table, lines[bad[0]], "r_px_mm", cols["r_px_mm"][bad[0]],
-              "R_x > R_y: x must be the minor axis of the contact ellipse (larger curvature)")
+        i = bad[0]
+        R_x, R_y = 1e3 * values["R_x"][i], 1e3 * values["R_y"][i]
+        _fail(table, lines[i], "r_px_mm", cols["r_px_mm"][i],
+              f"reduced radii R_x = {R_x:.4g} mm > R_y = {R_y:.4g} mm: x must be the minor axis "
+              "of the contact ellipse (the larger curvature)")
     for key, name in VELOCITY_COLUMNS.items():
         values[key] = cols[name] / (omega_p if key.startswith("up") else omega_g)
     return values
@@ -345,7 +367,8 @@ def _check_arc(table, lines, inside):
     if runs != 1:
         _fail(table, lines[starts[-1]] if runs else None, None, None,
               "the tabulated pair must be in contact over one range of angles "
-              f"(found {runs}); leave its contact cells blank only out of contact")
+              f"(found {runs}{'; this row starts the last' if runs else ''}); "
+              "leave its contact cells blank only out of contact")
     if inside.sum() < MIN_CONTACT_ROWS:
         _fail(table, None, None, None,
               f"too few rows in contact: {inside.sum()}, need {MIN_CONTACT_ROWS}")
@@ -382,7 +405,21 @@ def table_samples(checked):
     for key in PAIR_SERIES:
         samples[key] = resample(checked.psi, checked.values[key], n)
         checks[key] = (checked.psi, checked.values[key])
+    _check_load_sum(checked, samples["ls"])
     return samples, checks
+
+
+def _check_load_sum(checked, ls):
+    """The shares of the three pairs, ls(ψ) + ls(ψ + 2π/3) + ls(ψ + 4π/3), must sum to 1."""
+    n = len(ls)
+    total = ls + np.roll(ls, -n // 3) + np.roll(ls, -2 * n // 3)
+    worst = int(np.argmax(np.abs(total - 1.0)))
+    if abs(total[worst] - 1.0) > LS_SUM_TOL:
+        phi_deg = math.degrees(3.0 * grid(n)[worst] / checked.N_p)
+        _fail(checked.path, None, "ls", None,
+              f"the load shares of the three pairs (the tabulated one and the same one and two "
+              f"angular pitches later) sum to {total[worst]:.3g} at phi_p = {phi_deg:.4g} deg "
+              f"(mod one period); they must sum to 1 within {LS_SUM_TOL}")
 
 
 def _check_pitch(checked, key, three):
@@ -393,8 +430,9 @@ def _check_pitch(checked, key, three):
     if diff > allowed:
         column = next(c for c, (k, _) in MESH_COLUMNS.items() if k == key)
         _fail(checked.path, None, column, None,
-              f"does not repeat every angular pitch 360/N_p deg with N_p = {checked.N_p} "
-              f"(pitch-to-pitch difference {diff:.3g} SI, allowed {allowed:.3g}); check N_p")
+              f"does not repeat every angular pitch (360/N_p deg) with N_p = {checked.N_p}: "
+              f"pitch-to-pitch difference {diff:.3g} {UNITS[key]}, allowed {allowed:.3g}; "
+              "check N_p")
 
 
 def import_table(path, speed_rpm=None, harmonics=HARMONICS, contact_harmonics=CONTACT_HARMONICS,
@@ -404,13 +442,14 @@ def import_table(path, speed_rpm=None, harmonics=HARMONICS, contact_harmonics=CO
     samples, checks = table_samples(checked)
     series = fit_gearset(samples, harmonics, contact_harmonics)
     comments = [
-        f"Imported from the TCA table {os.path.basename(path)} by `hypoid tca import` "
-        f"(hypoid {__version__}); format docs/tca-import.md.",
+        f"Imported from the TCA table {os.path.basename(path)} by `hypoid tca import`; "
+        "format docs/tca-import.md.",
         f"Pinion speed of the tabulated velocities {checked.speed_rpm:g} rpm; "
         f"{len(checked.lines)} rows over one period (3 angular pitches).",
         f"Fit (physics.md §10.7): resampled to {N_SAMPLES} points per period (cubic splines), "
         f"{harmonics} harmonics for k_m, R_p, e_0, ls",
-        f"  and {contact_harmonics} for the contact series, bridged outside contact by a C2 quintic.",
+        f"  and {contact_harmonics} for the contact series, bridged outside contact by a C2 "
+        "quintic.",
         "Units SI (m, N/m, rad); series format in docs/data-files.md.",
     ]
     notes = fit_notes(series, checks, "the table rows")
@@ -421,6 +460,8 @@ def import_table(path, speed_rpm=None, harmonics=HARMONICS, contact_harmonics=CO
 
 def export_csv(set_no, path, speed_rpm=2000.0, rows=360):
     """Writes the surrogate of gear set `set_no` as a TCA table (one period, `rows` rows)."""
+    if rows < 1 or not speed_rpm > 0:
+        raise ValueError(f"export needs rows >= 1 and a positive speed (have {rows}, {speed_rpm})")
     gs = sur.GearSet(sur.TABLE_1[set_no])
     N_p, N_g = gs.blank.N_p, gs.blank.N_g
     phi = np.arange(rows) * (6.0 * math.pi / N_p) / rows  # pinion angle [rad]
@@ -441,7 +482,7 @@ def export_csv(set_no, path, speed_rpm=2000.0, rows=360):
     columns.update({name: np.where(inside, v, np.nan) for name, v in contact.items()})
     with open(path, "w", newline="", encoding="utf-8") as f:
         f.write(f"# Gear set {set_no} of the paper's Table 1: surrogate TCA of physics.md §10\n"
-                f"# written by `hypoid tca export-csv` (hypoid {__version__}).\n"
+                "# written by `hypoid tca export-csv`.\n"
                 "# r_py_mm = r_gy_mm = 2 R_y: the surrogate defines only the reduced radius R_y.\n")
         out = csv.writer(f, lineterminator="\n")
         for key, value in (("name", f"Gear set {set_no} surrogate (exported table)"), ("N_p", N_p),
@@ -481,27 +522,27 @@ def _parser():
     return p
 
 
+def _gearsets(args):
+    """[(output path, Gearset)] for the surrogate and import commands."""
+    for n in (args.harmonics, args.contact_harmonics):
+        if not 0 <= n <= MAX_HARMONICS:
+            raise ValueError(f"harmonics must be 0..{MAX_HARMONICS}, not {n}")
+    if args.command == "import":
+        return [(args.out, import_table(args.table, args.speed_rpm, args.harmonics,
+                                        args.contact_harmonics, args.name))]
+    if args.all != bool(args.out_dir) or args.all == bool(args.out):
+        raise ValueError("use --set N --out FILE or --all --out-dir DIR")
+    sets = sorted(sur.TABLE_1) if args.all else [args.set]
+    return [(args.out or os.path.join(args.out_dir, f"gearset{n}.txt"),
+             surrogate(n, args.harmonics, args.contact_harmonics)) for n in sets]
+
+
 def _run(args):
     if args.command == "export-csv":
         export_csv(args.set, args.out, args.speed_rpm, args.rows)
         print(f"wrote {args.out}")
         return
-    for n in (args.harmonics, args.contact_harmonics):
-        if not 0 <= n <= MAX_HARMONICS:
-            raise ValueError(f"harmonics must be 0..{MAX_HARMONICS}, not {n}")
-    if args.command == "import":
-        jobs = [(args.out, import_table(args.table, args.speed_rpm, args.harmonics,
-                                        args.contact_harmonics, args.name))]
-    elif args.all:
-        if not args.out_dir:
-            raise ValueError("--all needs --out-dir")
-        jobs = [(os.path.join(args.out_dir, f"gearset{n}.txt"),
-                 surrogate(n, args.harmonics, args.contact_harmonics)) for n in sorted(sur.TABLE_1)]
-    else:
-        if not args.out:
-            raise ValueError("--set needs --out")
-        jobs = [(args.out, surrogate(args.set, args.harmonics, args.contact_harmonics))]
-    for path, gearset in jobs:
+    for path, gearset in _gearsets(args):
         write_gearset(path, gearset)
         print(f"wrote {path}")
         for key in MESH_SERIES + PAIR_SERIES:

@@ -12,6 +12,7 @@ from scipy.interpolate import CubicSpline
 N_SAMPLES = 768  # samples per period (§10.7: N ≥ 64; 512 there): 3·256, so the grids of the three
 #                  pairs coincide and Σ ls = 1, ls₀ = 1/3 hold exactly on the samples
 MAX_HARMONICS = 32  # most harmonics a gear-set file may carry
+ANGLE_EPS = 1e-9  # grid points this close to a contact arc's ends belong to the arc [rad]
 END_POINTS = 6  # samples used to estimate value, slope and curvature at each end of a contact arc
 
 
@@ -47,7 +48,8 @@ def fit(y, harmonics):
                          f"{2 * harmonics} samples per period (have {len(y)})")
     spectrum = np.fft.rfft(y)[1:harmonics + 1] * (2.0 / len(y))
     tiny = 1e-12 * np.max(np.abs(y))
-    return Series(float(np.mean(y)), _zero_tiny(-spectrum.imag, tiny), _zero_tiny(spectrum.real, tiny))
+    return Series(float(np.mean(y)), _zero_tiny(-spectrum.imag, tiny),
+                  _zero_tiny(spectrum.real, tiny))
 
 
 def _zero_tiny(c, tiny):
@@ -130,8 +132,8 @@ def resample(psi, y, n=N_SAMPLES):
     for start, length in _runs(defined):
         idx = (start + np.arange(length)) % len(y)
         arc = psi[idx] + 2 * np.pi * np.cumsum(np.r_[0, np.diff(idx) < 0])
-        at = arc[0] + np.mod(psi_grid - arc[0], 2 * np.pi)
-        inside = at <= arc[-1]
+        at = arc[0] + np.mod(psi_grid - arc[0] + ANGLE_EPS, 2 * np.pi) - ANGLE_EPS
+        inside = at <= arc[-1] + ANGLE_EPS
         out[inside] = CubicSpline(arc, y[idx])(at[inside])
     return out
 

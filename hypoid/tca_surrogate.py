@@ -138,7 +138,8 @@ class GearSet:
         for r_m, delta, h_am in ((self.r_m1, bl.delta_1, self.h_am[0]),
                                  (self.r_m2, bl.delta_2, self.h_am[1])):
             d_v = 2.0 * r_m / math.cos(delta)
-            total += math.sqrt((d_v + 2.0 * h_am) ** 2 - (d_v * math.cos(a)) ** 2) - d_v * math.sin(a)
+            d_vb, d_va = d_v * math.cos(a), d_v + 2.0 * h_am  # base and tip diameters
+            total += math.sqrt(d_va ** 2 - d_vb ** 2) - d_v * math.sin(a)
         return 0.5 * total
 
     @cached_property
@@ -167,7 +168,8 @@ class GearSet:
     def rho_t(self):  # relative radius of profile curvature at the mean point [m]
         bl, a_n = self.blank, self.alpha_nD
         cone = (math.cos(bl.beta_m1) * math.cos(bl.beta_m2) / math.cos(self.zeta_mp)
-                * (1.0 / (self.R_m2 * math.tan(bl.delta_2)) + 1.0 / (self.R_m1 * math.tan(bl.delta_1))))
+                * (1.0 / (self.R_m2 * math.tan(bl.delta_2))
+                   + 1.0 / (self.R_m1 * math.tan(bl.delta_1))))
         flank = (math.cos(a_n) * (math.tan(a_n) - math.tan(self.alpha_lim))
                  + math.tan(self.zeta_mp) * math.tan(self.beta_B))
         return flank / cone
@@ -231,12 +233,12 @@ def load_shares(gs, theta):
 
 
 def k_m(gs, theta):
-    """Total mesh stiffness [N/m]: Σ_j k_peak w(ξ_j), with k_peak set so the mean is k_m0 (mean Σw = ε/2)."""
+    """Total mesh stiffness [N/m], Σ_j k_peak w(ξ_j), k_peak = 2 k_m0/ε_TCA (mean Σw = ε/2)."""
     return 2.0 * gs.k_m0 / gs.eps_TCA * bump(xi_pairs(gs, theta)).sum(axis=0)
 
 
 def R_p(gs, theta):
-    """Contact radius [m]: Σ_j ls_j R_p0 (1 + y_j/R_m1), lengthwise position y_j = (ξ_j − ½) TRAVEL b_2."""
+    """Contact radius [m], Σ_j ls_j R_p0 (1 + y_j/R_m1), lengthwise y_j = (ξ_j − ½) TRAVEL b_2."""
     y = (xi_pairs(gs, theta) - 0.5) * TRAVEL * gs.blank.b_2
     return gs.R_p0 * (load_shares(gs, theta) * (1.0 + y / gs.R_m1)).sum(axis=0)
 
@@ -248,7 +250,7 @@ def e_0(theta):
 
 
 def pair_xi(gs, psi):
-    """Engagement coordinate of pair 1 at ψ = θ/3 (period 2π = three mesh cycles); > 1 out of contact."""
+    """Engagement coordinate ξ of pair 1 at ψ = θ/3 (period 2π: 3 mesh cycles); > 1: no contact."""
     return 3.0 * np.mod(np.asarray(psi, dtype=float), 2.0 * np.pi) / (2.0 * np.pi * gs.eps_TCA)
 
 
@@ -259,20 +261,20 @@ def pair_load_share(gs, psi):
 
 
 def roll(gs, xi):
-    """Roll distance s(ξ) from the pitch point [m], linear from approach (ξ = 0) to recess (ξ = 1)."""
+    """Roll distance s(ξ) from the pitch point [m], linear from approach (ξ = 0) to recess (1)."""
     s_a, s_r = gs.s_roll
     return s_a + np.asarray(xi, dtype=float) * (s_r - s_a)
 
 
 def profile_radii(gs, s):
-    """Profile radii of curvature of pinion and gear, ρ_1 = r_vn1 sin α_nD + s, ρ_2 = r_vn2 sin α_nD − s [m]."""
+    """Profile radii of pinion and gear [m]: ρ_1 = r_vn1 sin α_nD + s, ρ_2 = r_vn2 sin α_nD − s."""
     sin_a = math.sin(gs.alpha_nD)
     return gs.r_vn[0] * sin_a + s, gs.r_vn[1] * sin_a - s
 
 
 def x_radii(gs, s):
-    """Pinion and gear radii along the minor axis [m]: the profile radii scaled so that their reduced
-    radius at the pitch point is ρ_rel (R_x(s) = ρ_rel R_inv(s)/R_inv(0), §10.4)."""
+    """Pinion and gear radii along the minor axis [m]: the profile radii scaled so that their
+    reduced radius at the pitch point is ρ_rel (R_x(s) = ρ_rel R_inv(s)/R_inv(0), §10.4)."""
     scale = gs.rho_rel / reduced(*profile_radii(gs, 0.0))
     rho_1, rho_2 = profile_radii(gs, np.asarray(s, dtype=float))
     return scale * rho_1, scale * rho_2
@@ -284,11 +286,12 @@ def reduced(r_1, r_2):
 
 
 def surface_velocities(gs, s):
-    """Surface velocities in the ellipse frame: ((up_x, up_y) per unit ω_p, (ug_x, ug_y) per unit ω_g) [m/(rad/s)].
+    """Surface velocities in the ellipse frame [m/(rad/s)] at roll distance s:
+    ((up_x, up_y) per unit ω_p, (ug_x, ug_y) per unit ω_g).
 
-    Per unit own speed, member i has V_i = r_mi, V_⊥ = r_mi cos β_mi and Ω_i = V_⊥/r_vn,i; the profile
-    component is V_⊥ sin α_nD ± Ω_i s (+ pinion, − gear), the lengthwise one V_i sin β_mi. The minor
-    axis e_x is the profile direction turned by +β_B toward +lengthwise.
+    Per unit own speed, member i has V_i = r_mi, V_⊥ = r_mi cos β_mi and Ω_i = V_⊥/r_vn,i; the
+    profile component is V_⊥ sin α_nD ± Ω_i s (+ pinion, − gear), the lengthwise one V_i sin β_mi.
+    The minor axis e_x is the profile direction turned by +β_B toward +lengthwise.
     """
     bl, s = gs.blank, np.asarray(s, dtype=float)
     c, b = math.cos(gs.beta_B), math.sin(gs.beta_B)
@@ -303,13 +306,13 @@ def surface_velocities(gs, s):
 
 
 def pair_roll(gs, psi):
-    """Roll distance s [m] of pair 1 at ψ (clamped to the path) and the in-contact mask (0 ≤ ξ ≤ 1)."""
+    """Roll distance s [m] of pair 1 at ψ (clamped to the path) and the mask 0 ≤ ξ ≤ 1."""
     xi = pair_xi(gs, psi)
     return roll(gs, np.clip(xi, 0.0, 1.0)), xi <= 1.0
 
 
 def pair_contact(gs, psi):
-    """Contact series of pair 1 at ψ: dict of R_x, R_y, up_x, up_y, ug_x, ug_y; NaN out of contact."""
+    """Contact series of pair 1 at ψ: {R_x, R_y, up_x, up_y, ug_x, ug_y}, NaN out of contact."""
     s, inside = pair_roll(gs, psi)
     (up_x, up_y), (ug_x, ug_y) = surface_velocities(gs, s)
     values = {"R_x": reduced(*x_radii(gs, s)), "R_y": np.full_like(s, gs.R_y), "up_x": up_x,

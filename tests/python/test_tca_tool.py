@@ -48,7 +48,8 @@ def off_grid(n=4000, seed=7):
 
 # --- §10.1 blank geometry ------------------------------------------------------------------------
 
-# set: ζ_mp, (β_m1 − β_m2), ζ_m [deg]; r_m1, r_m2, R_m1, (R_e1 − b1/2), R_m2, (R_e2 − b2/2), m_mn [mm]
+# set: ζ_mp, (β_m1 − β_m2), ζ_m [deg];
+#      r_m1, r_m2, R_m1, (R_e1 − b1/2), R_m2, (R_e2 − b2/2), m_mn [mm]
 TABLE_10_1 = {
     1: ("18.44 18.40 16.06", "31.57 68.53 65.02 66.16 79.41 80.60 3.374"),
     2: ("13.13 13.04 11.59", "34.48 81.00 74.00 75.25 92.08 93.43 3.522"),
@@ -134,7 +135,8 @@ def mesh_frequencies(k_m, R_p, R_g):
 
 
 # set: f2 f3 [Hz], n(f2) n(f3) [rpm] (§8.4), checked to 0.1 % (k_m0 from the rounded invariant)
-TABLE_8_4 = {1: (261, 433, 1204, 2000), 2: (260.7, 431.9, 1043, 1728), 3: (261.4, 461.7, 1307, 2309)}
+TABLE_8_4 = {1: (261, 433, 1204, 2000), 2: (260.7, 431.9, 1043, 1728),
+             3: (261.4, 461.7, 1307, 2309)}
 
 
 @pytest.mark.parametrize("n", SETS)
@@ -149,7 +151,7 @@ def test_k_m0_places_the_mesh_modes_of_physics_8_4(n):
 
 # --- §10.4 path, velocities, radii ----------------------------------------------------------------
 
-# ξ: s [mm]; u_p x y, u_g x y [m/s]; |V_s|, u_e [m/s]; R_x [mm]; l_p, l_g [mm] (gear set 1, 2000 rpm)
+# gear set 1, 2000 rpm; ξ: s [mm]; u_p x y, u_g x y [m/s]; |V_s|, u_e [m/s]; R_x, l_p, l_g [mm]
 TABLE_10_4 = {
     0.02: ("-6.26", "2.08 4.38 2.03 1.96", "2.42 3.78", "14.1 -21.1 26.5"),
     0.34: ("0.04", "2.46 4.28 1.87 2.00", "2.36 3.81", "17.7 -22.7 31.8"),
@@ -257,7 +259,8 @@ def test_set_1_coefficients_match_physics_10_7(set1):
     check_significant(ls.sin, LS_S)
     check_significant(ls.cos, LS_C)
     assert ls.sin[2] == ls.cos[2] == ls.sin[5] == ls.cos[5] == 0.0
-    check_significant([rp.mean, rp.sin[0], rp.cos[0], rp.sin[1]], "21.009e-3 4.25e-6 5.70e-5 1.32e-5")
+    check_significant([rp.mean, rp.sin[0], rp.cos[0], rp.sin[1]],
+                      "21.009e-3 4.25e-6 5.70e-5 1.32e-5")
     e0 = set1.series["e_0"]
     assert e0.sin[:2] == pytest.approx([1.5e-6, 0.3e-6], rel=1e-12)
     assert np.abs(e0.sin[2:]).max(initial=0) == 0 and np.abs(e0.cos).max() == 0
@@ -325,7 +328,8 @@ def test_written_files_follow_the_data_file_format(n):
     entries = raw_entries(path)
     series_keys = {f"{s}.{p}" for s in MESH_SERIES + PAIR_SERIES for p in ("mean", "sin", "cos")}
     assert set(entries) == {"name", "N_p", "N_g"} | series_keys
-    assert entries["N_p"] == [str(sur.TABLE_1[n].N_p)] and entries["N_g"] == [str(sur.TABLE_1[n].N_g)]
+    bl = sur.TABLE_1[n]
+    assert entries["N_p"] == [str(bl.N_p)] and entries["N_g"] == [str(bl.N_g)]
     for key in series_keys:
         assert all(math.isfinite(float(v)) for v in entries[key])
     for s in MESH_SERIES + PAIR_SERIES:
@@ -466,7 +470,8 @@ BAD_TABLES = [
     (every_third_row, "too few rows in one period", ["32", "65"]),
     (swap_rows, "must increase strictly", ["line 14", "phi_p_deg"]),
     (lambda lines: lines[:-6], "one period is 3 angular pitches", ["83.0769", "N_p = 13"]),
-    (set_cell("k_m_N_per_m", 7, "-1.7e8"), "must be positive", ["line 16", "k_m_N_per_m", "-1.7e+08"]),
+    (set_cell("k_m_N_per_m", 7, "-1.7e8"), "must be positive",
+     ["line 16", "k_m_N_per_m", "-1.7e+08"]),
     (set_cell("ls", 20, "1.2"), "load share outside [0, 1]", ["line 29", "'ls'", "1.2"]),
     (set_meta("N_p", "14"), "does not repeat every angular pitch", ["k_m_N_per_m", "N_p = 14"]),
     (set_meta("N_g", "12"), "N_g is smaller than N_p", ["line 6", "12"]),
