@@ -17,7 +17,11 @@ static void kinematics(const hg_pair_contact *c, hg_pair_friction *out)
 void hg_friction_pair(const hg_friction_config *cfg, const hg_pair_contact *c, double *T_c_warm,
                       hg_pair_friction *out)
 {
-    (void)T_c_warm;
+    if (cfg->model == HG_FRICTION_MODEL_EHL_ISOTHERMAL ||
+        cfg->model == HG_FRICTION_MODEL_EHL_THERMAL) {
+        hg_ehl_pair(&cfg->ehl, cfg->lub, c, T_c_warm, out);
+        return;
+    }
     memset(out, 0, sizeof *out);
     kinematics(c, out);
     out->T_c = c->T_bath;

@@ -3,10 +3,13 @@
 #define HG_FRICTION_H
 
 #include "model/pair_contact.h"
+#include "tribo/ehl.h"
 
 typedef struct {
-    int model;       /* HG_FRICTION_MODEL_* of hg_vars.h */
-    double mu_const; /* friction coefficient of the coulomb model */
+    int model;                /* HG_FRICTION_MODEL_* of hg_vars.h */
+    double mu_const;          /* friction coefficient of the coulomb model */
+    hg_ehl_params ehl;        /* the EHL models (ehl.thermal set from the model) */
+    const hg_lubricant *lub;  /* the EHL models' lubricant */
 } hg_friction_config;
 
 /* Fills every field of *out. *T_c_warm is the pair's warm start for thermal models (in/out). */

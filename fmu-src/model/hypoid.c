@@ -15,7 +15,7 @@
 #define WRAP_PERIODS 64       /* wrap the pinion angle after this many load-share periods */
 #define MAX_EVENTS_PER_STEP 100000
 #define GOVERNOR_ZETA 0.7     /* damping ratio of the speed governor's closed loop */
-#define STEPS_PER_MESH 30     /* automatic max_step: 1/30 of a mesh period (physics 8.8) */
+#define STEPS_PER_MESH 30     /* CVODE's automatic max_step: 1/30 of a mesh period (physics 8.8) */
 #define MAX_AUTO_STEP 1e-3    /* [s] */
 
 struct hg_model {
@@ -23,11 +23,13 @@ struct hg_model {
     hg_log_fn log;
     void *log_ctx;
     hg_gearset gear;
+    hg_lubricant lub;
     hg_dyn_params p;
     hg_solver *solver;
     double atol[HG_NY];
     double rtol;
-    double max_step; /* user's max_step, 0 = automatic */
+    double max_step;      /* user's max_step, 0 = automatic */
+    int steps_per_mesh;   /* per mesh cycle: the fixed step (newmark) or the automatic max_step */
     double window_angle; /* pinion angle of one averaging window [rad] */
     hg_runtime rt;
 };
@@ -103,6 +105,44 @@ static int load_gearset(hg_model *m, const hg_vars *v, char *err, size_t errlen)
     hg_series_scale(&m->gear.k_m, v->k_m_scale);
     hg_series_scale(&m->gear.e_0, v->e_0_scale);
     return 0;
+}
+
+static int load_lubricant(hg_model *m, const hg_vars *v, char *err, size_t errlen)
+{
+    static const char *const builtin[] = {"lubricants/OS265962.txt", "lubricants/OS265963.txt"};
+    const char *name = builtin[v->lubricant == 2];
+    char path[4096], why[HG_ERRLEN];
+    if (resolve_path(m, v->lubricant_file, name, path, sizeof path, err, errlen)) return -1;
+    if (hg_lubricant_load(path, &m->lub, why, sizeof why)) {
+        snprintf(err, errlen, "%s = '%s': %s", v->lubricant_file[0] ? "lubricant_file" : "lubricant",
+                 v->lubricant_file[0] ? v->lubricant_file : name, why);
+        return -1;
+    }
+    return 0;
+}
+
+static void ehl_params(hg_model *m, const hg_vars *v)
+{
+    hg_ehl_params *e = &m->p.friction.ehl;
+    hg_ehl_params_default(e);
+    e->E = v->E;
+    e->nu = v->nu;
+    e->k_s = v->k_s;
+    e->rho_s = v->rho_s;
+    e->c_s = v->c_s;
+    e->tau_0 = v->tau_0;
+    e->varsigma_a = v->varsigma_a;
+    e->sigma_s = v->sigma_s;
+    e->eta_beta_sigma = v->eta_beta_sigma;
+    e->sigma_over_beta = v->sigma_over_beta;
+    e->T_inlet_rise = v->T_inlet_rise;
+    e->Lambda_cap = v->Lambda_cap;
+    e->k_f_override = v->k_f;
+    e->hertz = v->hertz_model == HG_HERTZ_MODEL_APPROX ? HG_HERTZ_APPROX : HG_HERTZ_EXACT;
+    e->roelands_Z = v->roelands_z == HG_ROELANDS_Z_EXACT ? HG_Z_EXACT : HG_Z_SIMPLE;
+    e->shear_pressure = v->shear_pressure == HG_SHEAR_PRESSURE_MAX ? HG_SHEAR_P_MAX : HG_SHEAR_P_MEAN;
+    e->thermal = v->friction_model == HG_FRICTION_MODEL_EHL_THERMAL;
+    m->p.friction.lub = &m->lub;
 }
 
 static int damping(hg_model *m, hg_vars *v, char *err, size_t errlen)
@@ -184,7 +224,8 @@ static void tolerances(hg_model *m, const hg_vars *v)
     t[HG_Y_E_IN] = t[HG_Y_E_OUT] = t[HG_Y_E_FRIC] = t[HG_Y_E_DAMP] = t[HG_Y_E_EXC] = E;
     t[HG_Y_ETA2] = 1e-9;
     m->rtol = v->rtol;
-    m->max_step = v->max_step;
+    m->max_step = v->solver == HG_SOLVER_NEWMARK ? 0.0 : v->max_step;
+    m->steps_per_mesh = v->solver == HG_SOLVER_NEWMARK ? v->steps_per_mesh_cycle : STEPS_PER_MESH;
 }
 
 static void inputs_of(const hg_vars *v, hg_dyn_inputs *u)
@@ -231,7 +272,9 @@ static void write_outputs(hg_model *m, hg_vars *v);
 static int make_solver(hg_model *m, const hg_vars *v, char *err, size_t errlen)
 {
     hg_solver_options opt;
-    opt.method = v->solver == HG_SOLVER_CVODE_ADAMS ? HG_METHOD_ADAMS : HG_METHOD_BDF;
+    opt.method = v->solver == HG_SOLVER_CVODE_ADAMS ? HG_METHOD_ADAMS
+                 : v->solver == HG_SOLVER_NEWMARK    ? HG_METHOD_NEWMARK
+                                                     : HG_METHOD_BDF;
     opt.rtol = m->rtol;
     opt.atol = m->atol;
     opt.max_steps = 500000;
@@ -242,8 +285,9 @@ static int make_solver(hg_model *m, const hg_vars *v, char *err, size_t errlen)
 
 int hg_model_setup(hg_model *m, hg_vars *v, double t0, char *err, size_t errlen)
 {
-    if (load_gearset(m, v, err, errlen)) return -1;
+    if (load_gearset(m, v, err, errlen) || load_lubricant(m, v, err, errlen)) return -1;
     dynamics_params(m, v);
+    ehl_params(m, v);
     if (damping(m, v, err, errlen)) return -1;
     v->R_p0 = m->p.R_p0;
     v->k_m0 = m->p.k_m0;
@@ -361,7 +405,7 @@ static int begin_step(hg_model *m, const hg_vars *v, const hg_dyn_inputs *du, ch
     wrap_angle(m);
     if (h_max <= 0.0) {
         f_mesh = fabs(rt->y[HG_Y_W_P]) * m->gear.N_p / TWO_PI;
-        h_max = f_mesh > 0.0 ? 1.0 / (STEPS_PER_MESH * f_mesh) : MAX_AUTO_STEP;
+        h_max = f_mesh > 0.0 ? 1.0 / (m->steps_per_mesh * f_mesh) : MAX_AUTO_STEP;
         if (h_max > MAX_AUTO_STEP) h_max = MAX_AUTO_STEP;
     }
     if (hg_solver_set_max_step(m->solver, h_max, err, errlen)) return -1;
@@ -421,6 +465,14 @@ static void write_pairs(hg_vars *v, const hg_dyn_eval *ev)
     }
 }
 
+static void solver_stats(const hg_model *m, hg_vars *v)
+{
+    long steps = 0, evals = 0;
+    if (m->solver) hg_solver_stats(m->solver, &steps, &evals);
+    v->solver_steps = steps > 2147483647L ? 2147483647 : (int)steps;
+    v->rhs_evals = evals > 2147483647L ? 2147483647 : (int)evals;
+}
+
 static void write_outputs(hg_model *m, hg_vars *v)
 {
     const hg_runtime *rt = &m->rt;
@@ -448,6 +500,7 @@ static void write_outputs(hg_model *m, hg_vars *v)
     v->k_m = ev.mesh.k_m;
     v->contact = rt->mode;
     v->n_impacts = rt->n_impacts;
+    solver_stats(m, v);
     v->E_in = y[HG_Y_E_IN];
     v->E_out = y[HG_Y_E_OUT];
     v->E_friction = y[HG_Y_E_FRIC];

@@ -8,7 +8,11 @@
 typedef int (*hg_rhs_fn)(double t, const double *y, double *ydot, void *user);
 typedef int (*hg_root_fn)(double t, const double *y, double *g, void *user);
 
-typedef enum { HG_METHOD_BDF, HG_METHOD_ADAMS } hg_method;
+typedef enum {
+    HG_METHOD_BDF,    /* CVODE variable-order BDF */
+    HG_METHOD_ADAMS,  /* CVODE variable-order Adams-Moulton */
+    HG_METHOD_NEWMARK /* fixed-step Newmark-beta, beta = 1/4, gamma = 1/2 (the paper's scheme) */
+} hg_method;
 
 typedef struct {
     hg_method method;
@@ -26,7 +30,7 @@ void hg_solver_free(hg_solver *s);
 /* Starts (or restarts, discarding the history) the integration from (t0, y0). */
 int hg_solver_restart(hg_solver *s, double t0, const double *y0, char *err, size_t errlen);
 
-/* Largest internal step (0 = unlimited). */
+/* Largest internal step (0 = unlimited); for the fixed-step method, the step itself. */
 int hg_solver_set_max_step(hg_solver *s, double h_max, char *err, size_t errlen);
 
 typedef enum { HG_ADVANCE_REACHED, HG_ADVANCE_ROOT, HG_ADVANCE_FAILED } hg_advance_result;

@@ -1,5 +1,5 @@
 /* hg_solver on SUNDIALS CVODE (BDF or Adams, dense direct linear solver, Newton iteration). */
-#include "solver/solver.h"
+#include "solver/solver_impl.h"
 
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
@@ -11,7 +11,7 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
-struct hg_solver {
+typedef struct {
     int n, n_roots;
     hg_rhs_fn f;
     hg_root_fn g;
@@ -24,35 +24,35 @@ struct hg_solver {
     int *root_info;
     long steps_before, rhs_before; /* counters of earlier CVODE runs (restarts reset them) */
     char last_error[256];          /* CVODE's own message of the last failure */
-};
+} cvode_solver;
 
 static int rhs_adapter(sunrealtype t, N_Vector y, N_Vector ydot, void *data)
 {
-    hg_solver *s = data;
+    cvode_solver *s = data;
     return s->f(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), s->user);
 }
 
 static int root_adapter(sunrealtype t, N_Vector y, sunrealtype *g, void *data)
 {
-    hg_solver *s = data;
+    cvode_solver *s = data;
     return s->g(t, N_VGetArrayPointer(y), g, s->user);
 }
 
 static void error_handler(int code, const char *module, const char *function, char *msg,
                           void *data)
 {
-    hg_solver *s = data;
+    cvode_solver *s = data;
     snprintf(s->last_error, sizeof s->last_error, "%s %s (%d): %s", module, function, code, msg);
 }
 
-static int fail(char *err, size_t errlen, const char *what, int flag, const hg_solver *s)
+static int fail(char *err, size_t errlen, const char *what, int flag, const cvode_solver *s)
 {
     snprintf(err, errlen, "CVODE: %s failed (flag %d)%s%s", what, flag,
              s && s->last_error[0] ? ": " : "", s ? s->last_error : "");
     return -1;
 }
 
-static int configure(hg_solver *s, const hg_solver_options *opt, char *err, size_t errlen)
+static int configure(cvode_solver *s, const hg_solver_options *opt, char *err, size_t errlen)
 {
     int flag;
     memcpy(N_VGetArrayPointer(s->atol), opt->atol, (size_t)s->n * sizeof(double));
@@ -69,10 +69,12 @@ static int configure(hg_solver *s, const hg_solver_options *opt, char *err, size
     return 0;
 }
 
-hg_solver *hg_solver_new(int n, int n_roots, hg_rhs_fn f, hg_root_fn g, void *user,
-                         const hg_solver_options *opt, char *err, size_t errlen)
+static void destroy(void *impl);
+
+static void *create(int n, int n_roots, hg_rhs_fn f, hg_root_fn g, void *user,
+                    const hg_solver_options *opt, char *err, size_t errlen)
 {
-    hg_solver *s = calloc(1, sizeof *s);
+    cvode_solver *s = calloc(1, sizeof *s);
     if (!s) {
         snprintf(err, errlen, "out of memory creating the solver");
         return NULL;
@@ -89,19 +91,20 @@ hg_solver *hg_solver_new(int n, int n_roots, hg_rhs_fn f, hg_root_fn g, void *us
         !(s->LS = SUNLinSol_Dense(s->y, s->A, s->ctx)) ||
         !(s->root_info = calloc((size_t)(n_roots > 0 ? n_roots : 1), sizeof(int)))) {
         snprintf(err, errlen, "out of memory creating the CVODE solver");
-        hg_solver_free(s);
+        destroy(s);
         return NULL;
     }
     N_VConst(0.0, s->y);
     if (configure(s, opt, err, errlen)) {
-        hg_solver_free(s);
+        destroy(s);
         return NULL;
     }
     return s;
 }
 
-void hg_solver_free(hg_solver *s)
+static void destroy(void *impl)
 {
+    cvode_solver *s = impl;
     if (!s) return;
     if (s->cvode) CVodeFree(&s->cvode);
     if (s->LS) SUNLinSolFree(s->LS);
@@ -113,7 +116,7 @@ void hg_solver_free(hg_solver *s)
     free(s);
 }
 
-static void accumulate_stats(hg_solver *s)
+static void accumulate_stats(cvode_solver *s)
 {
     long steps = 0, evals = 0;
     CVodeGetNumSteps(s->cvode, &steps);
@@ -122,8 +125,9 @@ static void accumulate_stats(hg_solver *s)
     s->rhs_before += evals;
 }
 
-int hg_solver_restart(hg_solver *s, double t0, const double *y0, char *err, size_t errlen)
+static int restart(void *impl, double t0, const double *y0, char *err, size_t errlen)
 {
+    cvode_solver *s = impl;
     int flag;
     accumulate_stats(s);
     memcpy(N_VGetArrayPointer(s->y), y0, (size_t)s->n * sizeof(double));
@@ -133,15 +137,17 @@ int hg_solver_restart(hg_solver *s, double t0, const double *y0, char *err, size
     return 0;
 }
 
-int hg_solver_set_max_step(hg_solver *s, double h_max, char *err, size_t errlen)
+static int set_max_step(void *impl, double h_max, char *err, size_t errlen)
 {
+    cvode_solver *s = impl;
     int flag = CVodeSetMaxStep(s->cvode, h_max);
     return flag == CV_SUCCESS ? 0 : fail(err, errlen, "CVodeSetMaxStep", flag, s);
 }
 
-hg_advance_result hg_solver_advance(hg_solver *s, double t_stop, double *t, double *y,
-                                    int *roots, char *err, size_t errlen)
+static hg_advance_result advance(void *impl, double t_stop, double *t, double *y, int *roots,
+                                 char *err, size_t errlen)
 {
+    cvode_solver *s = impl;
     sunrealtype t_ret = 0.0;
     int flag = CVodeSetStopTime(s->cvode, t_stop);
     if (flag != CV_SUCCESS) {
@@ -163,11 +169,14 @@ hg_advance_result hg_solver_advance(hg_solver *s, double t_stop, double *t, doub
     return HG_ADVANCE_FAILED;
 }
 
-void hg_solver_stats(const hg_solver *s, long *steps, long *rhs_evals)
+static void stats(const void *impl, long *steps, long *rhs_evals)
 {
+    const cvode_solver *s = impl;
     long st = 0, ev = 0;
     CVodeGetNumSteps(s->cvode, &st);
     CVodeGetNumRhsEvals(s->cvode, &ev);
     *steps = s->steps_before + st;
     *rhs_evals = s->rhs_before + ev;
 }
+
+const hg_solver_ops hg_cvode_ops = {create, destroy, restart, set_max_step, advance, stats};

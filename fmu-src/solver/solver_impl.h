@@ -1,0 +1,21 @@
+/* What each integrator implements behind hg_solver (solver.c dispatches on the method). */
+#ifndef HG_SOLVER_IMPL_H
+#define HG_SOLVER_IMPL_H
+
+#include "solver/solver.h"
+
+typedef struct {
+    void *(*create)(int n, int n_roots, hg_rhs_fn f, hg_root_fn g, void *user,
+                    const hg_solver_options *opt, char *err, size_t errlen);
+    void (*destroy)(void *impl);
+    int (*restart)(void *impl, double t0, const double *y0, char *err, size_t errlen);
+    int (*set_max_step)(void *impl, double h_max, char *err, size_t errlen);
+    hg_advance_result (*advance)(void *impl, double t_stop, double *t, double *y, int *roots,
+                                 char *err, size_t errlen);
+    void (*stats)(const void *impl, long *steps, long *rhs_evals);
+} hg_solver_ops;
+
+extern const hg_solver_ops hg_cvode_ops;
+extern const hg_solver_ops hg_newmark_ops;
+
+#endif

@@ -1,0 +1,30 @@
+/* Central film thickness: see film.h. */
+#include "tribo/film.h"
+
+#include <math.h>
+
+double hg_film_chittenden(double eta0, double alpha_star, double u_e, double W, double E_star,
+                          double R_e, double R_s)
+{
+    double lnU, lnG, lnW, r23;
+    if (!(u_e > 0.0 && W > 0.0 && eta0 > 0.0 && alpha_star > 0.0)) return 0.0;
+    lnU = log(eta0 * u_e / (E_star * R_e)); /* U_e */
+    lnG = log(alpha_star * E_star);         /* G */
+    lnW = log(W / (E_star * R_e * R_e));    /* W_e */
+    r23 = cbrt(R_s / R_e);
+    r23 *= r23; /* (R_s/R_e)^(2/3) */
+    /* eq. 10 */
+    return 4.31 * R_e * exp(0.68 * lnU + 0.49 * lnG - 0.073 * lnW) * (1.0 - exp(-1.23 * r23));
+}
+
+double hg_film_hamrock_dowson(double eta0, double alpha_star, double u, double W, double E_star,
+                              double R_x, double k)
+{
+    double U, G, Wd;
+    if (!(u > 0.0 && W > 0.0 && eta0 > 0.0 && alpha_star > 0.0)) return 0.0;
+    U = eta0 * u / (E_star * R_x);
+    G = alpha_star * E_star;
+    Wd = W / (E_star * R_x * R_x);
+    return 2.69 * R_x * pow(U, 0.67) * pow(G, 0.53) * pow(Wd, -0.067) *
+           (1.0 - 0.61 * exp(-0.73 * k));
+}

@@ -1,0 +1,34 @@
+/* Lubricant properties (paper Table 2, physics.md 4, 6.5) and the lubricant data file
+ * "hypoid-lubricant 1" (docs/data-files.md). */
+#ifndef HG_TRIBO_LUBRICANT_H
+#define HG_TRIBO_LUBRICANT_H
+
+#include <stddef.h>
+
+#define HG_LUBRICANT_NAME_LEN 80
+
+typedef struct {
+    char name[HG_LUBRICANT_NAME_LEN]; /* human-readable name */
+    double vogel_a;       /* Vogel eta_0 = a exp(b/(T - c)): a [Pa s] */
+    double vogel_b;       /* b [K] */
+    double vogel_c;       /* c [K] */
+    double alpha_T[3];    /* temperatures of the alpha* data [K], strictly increasing */
+    double alpha_star[3]; /* reciprocal asymptotic isoviscous pressure coefficient [1/Pa] */
+    double hn_lambda;     /* Havriliak-Negami relaxation time lambda [s] (paper eq. 8) */
+    double hn_alpha;      /* alpha_HN [-] */
+    double hn_beta;       /* beta_HN [-] */
+    double k_f;           /* thermal conductivity [W/(m K)] */
+    double c_p_f;         /* specific heat [J/(kg K)] (not used by eqs. 14-19) */
+    double rho_15;        /* density at 15 degC [kg/m^3] (informative) */
+} hg_lubricant;
+
+/* Validates a filled struct (the same range checks as the file loader, plus: alpha*(T) of
+ * physics 4.2 positive and non-increasing on [alpha_T[0], alpha_T[2]], and the Vogel pole c at
+ * least 40 K below alpha_T[0]). Returns 0, or -1 with a message in err. */
+int hg_lubricant_check(const hg_lubricant *lub, char *err, size_t errlen);
+
+/* Reads a "hypoid-lubricant 1" file into *lub. Returns 0, or -1 with err naming the file and,
+ * where there is one, the line. *lub is only written on success. */
+int hg_lubricant_load(const char *path, hg_lubricant *lub, char *err, size_t errlen);
+
+#endif

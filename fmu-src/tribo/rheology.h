@@ -1,0 +1,80 @@
+/* Lubricant rheology (physics.md 4; paper eqs. 7-8): Vogel eta_0(T), alpha*(T), Roelands
+ * eta(p, T) with Z from alpha* (simple or exact), Havriliak-Negami shear thinning.
+ * Temperatures in K, pressures in Pa, viscosities in Pa s. Pure functions. */
+#ifndef HG_TRIBO_RHEOLOGY_H
+#define HG_TRIBO_RHEOLOGY_H
+
+#include "tribo/lubricant.h"
+
+#define HG_ROELANDS_P0 1.96e8     /* [Pa] (1/p0 = 5.1e-9 1/Pa) */
+#define HG_ROELANDS_LN_ETA_R 9.67 /* -ln(6.31e-5 Pa s) */
+/* Guards (physics 4.3): the Roelands index A = ln eta_0 + 9.67 is floored at HG_ROELANDS_A_MIN
+ * (eta_0 >= 0.17 mPa s; our oils have A >= 2.8 up to 300 degC); Vogel is evaluated at
+ * T >= c + HG_VOGEL_DT_MIN (its pole is at T = c); ln eta is capped at HG_LN_ETA_MAX. These only
+ * act far outside the range of gear oils and keep every result finite. */
+#define HG_ROELANDS_A_MIN 1.0
+#define HG_VOGEL_DT_MIN 40.0
+#define HG_LN_ETA_MAX 230.0
+/* hg_ehl_pair evaluates the rheology (Vogel, alpha*) at T clamped to
+ * [c + HG_VOGEL_DT_MIN, HG_RHEO_T_MAX]: beyond 500 degC any extrapolation of gear-oil data is
+ * meaningless, and the cap keeps the extrapolated alpha* away from zero. */
+#define HG_RHEO_T_MAX 773.15
+
+/* ln eta_0 = ln a + b/(T - c), T clamped to >= c + HG_VOGEL_DT_MIN (Vogel). */
+double hg_vogel_ln_eta0(double ln_a, double b, double c, double T);
+double hg_vogel_eta0(const hg_lubricant *lub, double T);
+
+/* alpha*(T) interpolant of physics 4.2 with its coefficients computed once (pure data; build it
+ * with hg_alpha_interp_init whenever the lubricant changes, or let hg_alpha_star do it). */
+typedef struct {
+    double T0, T1, T2; /* data temperatures [K] */
+    double y0, y2;     /* alpha* at T0 and T2 [1/Pa] */
+    double d1, d2;     /* Newton divided differences of the quadratic */
+    double s0, s2;     /* d ln alpha* / dT of the quadratic at T0 and T2 [1/K] */
+} hg_alpha_interp;
+
+void hg_alpha_interp_init(const hg_lubricant *lub, hg_alpha_interp *ai);
+double hg_alpha_interp_eval(const hg_alpha_interp *ai, double T, double *dlnalpha_dT);
+
+/* alpha*(T) [1/Pa] (physics 4.2): the quadratic through the three data points inside
+ * [alpha_T[0], alpha_T[2]], log-linear outside with the slope of ln alpha* of the quadratic at the
+ * nearest end (C1-continuous). *dlnalpha_dT (may be NULL) receives d ln alpha* / dT [1/K]. */
+double hg_alpha_star(const hg_lubricant *lub, double T, double *dlnalpha_dT);
+
+/* Roelands index A = max(ln eta_0 + 9.67, HG_ROELANDS_A_MIN). */
+double hg_roelands_A(double ln_eta0);
+
+/* Z_simple = alpha* p0 / A: the Roelands initial slope equals alpha*. */
+double hg_roelands_Z_simple(double alpha_star, double A);
+
+/* Blok's alpha* = [int_0^inf eta(0)/eta(p) dp]^-1 of the Roelands law with index Z [1/Pa].
+ * Exact evaluation: with u = A((1+p/p0)^Z - 1) the integral is (p0/(Z A)) L, and
+ * L = int_0^inf e^-u (1+u/A)^(1/Z-1) du = A e^A A^(-1/Z) Gamma(1/Z, A), so
+ * alpha* p0 = Z / C(1/Z, A) with C(a, x) = e^x x^-a Gamma(a, x) evaluated by its continued
+ * fraction (no quadrature needed). */
+double hg_roelands_alpha_star(double Z, double A);
+
+/* Validated domain of Z_exact: alpha* p0 >= HG_Z_EXACT_S_MIN (alpha* >= 0.05 1/GPa) and
+ * A <= HG_Z_EXACT_A_MAX; outside it (only reachable by extrapolating alpha*(T) far beyond the
+ * data) Z_exact falls back to Z_simple. */
+#define HG_Z_EXACT_S_MIN 0.0098
+#define HG_Z_EXACT_A_MAX 300.0
+
+/* Z_exact: the Z for which hg_roelands_alpha_star(Z, A) = alpha*, by Newton on ln(1/Z)
+ * (relative accuracy ~1e-14, hence smooth in T). Z_guess > 0 warm-starts it (<= 0: none).
+ * dZ_dA and dZ_dlnalpha (may be NULL) receive the partial derivatives of Z_exact with respect to
+ * A and ln alpha*, by implicit differentiation. Returns 0 when alpha* <= 0. */
+double hg_roelands_Z_exact(double alpha_star, double A, double Z_guess, double *dZ_dA,
+                           double *dZ_dlnalpha);
+
+/* ln(eta/eta_0) = A [(1 + p/p0)^Z - 1], given ln1p_p = ln(1 + p/p0) (Roelands). */
+double hg_roelands_ln_ratio(double A, double Z, double ln1p_p);
+
+/* Havriliak-Negami F(gamma_dot) = (1 + (lambda gamma_dot)^alpha_HN)^beta_HN (paper eq. 8);
+ * the shear stress is tau = eta gamma_dot / F (eq. 7). */
+double hg_hn_factor(double lambda, double alpha_hn, double beta_hn, double gamma_dot);
+
+/* Optional limiting shear stress: min(tau, Lambda p) when Lambda > 0 (physics 4.5). */
+double hg_shear_cap(double tau, double Lambda, double p);
+
+#endif

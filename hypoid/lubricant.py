@@ -1,0 +1,314 @@
+"""`hypoid lubricant`: write a lubricant data file ("hypoid-lubricant 1") from data-sheet values.
+
+Data sheets give KV40, KV100 and rho15; the FMU needs the Vogel law eta_0(T) = a exp(b/(T - c)).
+The fit follows physics.md 4.1:
+
+1. Walther / ASTM D341, log10 log10(nu + 0.7) = A - B log10(T [K]), through KV40 and KV100.
+2. A third point from it at 150 degC.
+3. Dynamic viscosity with rho(T) = rho15 [1 - 6.5e-4 (T - 15 degC)].
+4. Vogel exactly through the three points: eliminating a and b leaves one equation in c,
+   (L1 - L2)(x2 - x3) = (L2 - L3)(x1 - x2) with L = ln eta, x = 1/(T - c), solved by bracketing
+   c in (-273.15 degC, 40 degC); then b = (L1 - L2)/(x1 - x2) and a = exp(L1 - b x1).
+
+The pressure-viscosity data (alpha* at three temperatures), the Havriliak-Negami parameters and
+the thermal properties are copied through with range checks. `--builtin` regenerates the two
+lubricants of the paper (Table 2) in resources/lubricants/. The file format is documented in
+docs/data-files.md.
+"""
+
+import argparse
+import math
+import os
+import sys
+
+C0 = 273.15  # K at 0 degC
+T_THIRD = 150.0  # degC, third point of the Vogel fit
+EXPANSION = 6.5e-4  # 1/K, density law of physics 4.1
+MAGIC = "hypoid-lubricant 1"
+
+# Paper Table 2 and the assumed SAE 75W-90 data of physics 4.1 (same for both oils)
+BUILTIN = {
+    "OS265962": dict(kv40=100.0, kv100=15.0, rho15=870.0, alpha_star=(16.09, 11.59, 9.38),
+                     alpha_temps=(40.0, 100.0, 140.0), hn_lambda=7.9e-8, hn_alpha=0.70,
+                     hn_beta=1.0, k_f=0.18, c_p=2090.0),
+    "OS265963": dict(kv40=100.0, kv100=15.0, rho15=870.0, alpha_star=(19.31, 13.89, 12.28),
+                     alpha_temps=(40.0, 100.0, 140.0), hn_lambda=8.0e-8, hn_alpha=0.97,
+                     hn_beta=1.0, k_f=0.18, c_p=2090.0),
+}
+BUILTIN_NOTES = {
+    "OS265962": [],
+    "OS265963": [
+        "k_f: the paper's Table 2 prints 0.80 W/(m K), about 5x the conductivity of any",
+        "mineral/PAO gear oil (0.12-0.15, ~0.2-0.3 at 1 GPa); physics.md decision D8 uses 0.18.",
+        "Set the FMU's k_f override to 0.80 to reproduce the paper as printed.",
+    ],
+}
+
+
+class LubricantError(ValueError):
+    """Bad data-sheet values; the message says which and why."""
+
+
+def _check_range(label, value, lo, hi, unit=""):
+    if not (isinstance(value, (int, float)) and math.isfinite(value)):
+        raise LubricantError(f"{label} = {value!r} is not a finite number")
+    if not (lo <= value <= hi):
+        u = f" {unit}" if unit else ""
+        raise LubricantError(f"{label} = {value:g}{u} is outside the accepted range "
+                             f"[{lo:g}, {hi:g}]{u}")
+
+
+def walther_fit(kv40, kv100):
+    """A, B of log10 log10(nu + 0.7) = A - B log10(T_K) through (40, kv40), (100, kv100)."""
+    y1 = math.log10(math.log10(kv40 + 0.7))
+    y2 = math.log10(math.log10(kv100 + 0.7))
+    x1 = math.log10(40.0 + C0)
+    x2 = math.log10(100.0 + C0)
+    b = (y1 - y2) / (x2 - x1)
+    return y1 + b * x1, b
+
+
+def walther_nu(a, b, t_c):
+    """Kinematic viscosity [mm^2/s] at t_c [degC] from the Walther constants."""
+    return 10.0 ** (10.0 ** (a - b * math.log10(t_c + C0))) - 0.7
+
+
+def density(rho15, t_c):
+    """rho(T) = rho15 [1 - 6.5e-4 (T - 15)] [kg/m^3], T in degC (physics 4.1, assumed)."""
+    return rho15 * (1.0 - EXPANSION * (t_c - 15.0))
+
+
+def vogel_through(temps_c, etas):
+    """Exact Vogel (a [Pa s], b [K], c [degC]) through three (T [degC], eta [Pa s]) points."""
+    t1, t2, t3 = temps_c
+    l1, l2, l3 = (math.log(e) for e in etas)
+    if not (t1 < t2 < t3) or not (l1 > l2 > l3):
+        raise LubricantError("the viscosity must fall with temperature for a Vogel fit")
+
+    def resid(c):
+        x1, x2, x3 = 1.0 / (t1 - c), 1.0 / (t2 - c), 1.0 / (t3 - c)
+        return (l1 - l2) * (x2 - x3) - (l2 - l3) * (x1 - x2)
+
+    # the residual tends to -inf as c -> t1; scan up from absolute zero for the first sign change
+    lo_bound, hi_bound = -C0 + 1e-9, t1 - 1e-9
+    n = 4000
+    prev_c, prev_r = lo_bound, resid(lo_bound)
+    bracket = None
+    for i in range(1, n + 1):
+        c = lo_bound + (hi_bound - lo_bound) * i / n
+        r = resid(c)
+        if prev_r == 0.0:
+            bracket = (prev_c, prev_c)
+            break
+        if (prev_r > 0.0) != (r > 0.0):
+            bracket = (prev_c, c)
+            break
+        prev_c, prev_r = c, r
+    if bracket is None:
+        raise LubricantError(
+            "no Vogel law eta = a exp(b/(T - c)) with c above absolute zero passes through "
+            "these viscosities (the viscosity-temperature curve is too flat); check KV40/KV100")
+    lo, hi = bracket
+    r_lo = resid(lo)
+    for _ in range(200):  # bisection to machine precision
+        mid = 0.5 * (lo + hi)
+        if mid in (lo, hi):
+            break
+        r_mid = resid(mid)
+        if (r_mid > 0.0) == (r_lo > 0.0):
+            lo, r_lo = mid, r_mid
+        else:
+            hi = mid
+    c = 0.5 * (lo + hi)
+    x1, x2 = 1.0 / (t1 - c), 1.0 / (t2 - c)
+    b = (l1 - l2) / (x1 - x2)
+    a = math.exp(l1 - b * x1)
+    return a, b, c
+
+
+def fit_vogel(kv40, kv100, rho15):
+    """physics 4.1: Vogel a [Pa s], b [K], c [degC] from KV40, KV100 [mm^2/s], rho15 [kg/m^3]."""
+    _check_range("KV40", kv40, 1.0, 1e5, "mm^2/s")
+    _check_range("KV100", kv100, 0.5, 1e4, "mm^2/s")
+    _check_range("rho15", rho15, 500.0, 2000.0, "kg/m^3")
+    if not kv100 < kv40:
+        raise LubricantError(f"KV100 = {kv100:g} mm^2/s must be below KV40 = {kv40:g} mm^2/s")
+    wa, wb = walther_fit(kv40, kv100)
+    temps = (40.0, 100.0, T_THIRD)
+    nus = (kv40, kv100, walther_nu(wa, wb, T_THIRD))
+    etas = [nu * 1e-6 * density(rho15, t) for nu, t in zip(nus, temps)]
+    return vogel_through(temps, etas)
+
+
+def vogel_eta(a, b, c_degc, t_degc):
+    return a * math.exp(b / (t_degc - c_degc))
+
+
+def _check_alpha(alpha_star, alpha_temps):
+    if len(alpha_star) != 3 or len(alpha_temps) != 3:
+        raise LubricantError("alpha* needs exactly three values at three temperatures")
+    for i, (al, t) in enumerate(zip(alpha_star, alpha_temps)):
+        _check_range(f"alpha* value {i + 1}", al, 0.1, 100.0, "1/GPa")
+        _check_range(f"alpha* temperature {i + 1}", t, -73.15, 426.85, "degC")
+    t, y = alpha_temps, alpha_star
+    if not (t[0] + 1.0 <= t[1] and t[1] + 1.0 <= t[2]):
+        raise LubricantError("the alpha* temperatures must increase (by at least 1 K each)")
+    # the quadratic of physics 4.2 must not increase on [t1, t3] (slopes at both ends <= 0)
+    d1 = (y[1] - y[0]) / (t[1] - t[0])
+    d2 = ((y[2] - y[1]) / (t[2] - t[1]) - d1) / (t[2] - t[0])
+    if d1 + d2 * (t[0] - t[1]) > 0.0 or d1 + d2 * ((t[2] - t[0]) + (t[2] - t[1])) > 0.0:
+        raise LubricantError(
+            f"alpha* = {y[0]:g}, {y[1]:g}, {y[2]:g} 1/GPa: the quadratic through them must not "
+            "increase with temperature between the first and last temperature")
+
+
+def build(name, kv40, kv100, rho15, alpha_star, alpha_temps, hn_lambda, hn_alpha, hn_beta, k_f,
+          c_p):
+    """Checks the data-sheet values and returns the file's values (SI) plus the fit details."""
+    if not isinstance(name, str) or not name.strip():
+        raise LubricantError("the lubricant name is empty")
+    if any(ch in name for ch in "#\n\r\0"):
+        raise LubricantError("the lubricant name must not contain '#' or line breaks")
+    if len(name.strip()) > 79:
+        raise LubricantError("the lubricant name is longer than 79 characters")
+    a, b, c = fit_vogel(kv40, kv100, rho15)
+    _check_alpha(list(alpha_star), list(alpha_temps))
+    _check_range("HN lambda", hn_lambda, 0.0, 1e-3, "s")
+    _check_range("HN alpha", hn_alpha, 1e-3, 1.0)
+    _check_range("HN beta", hn_beta, 1e-3, 10.0)
+    if hn_alpha * hn_beta > 1.0 + 1e-12:
+        raise LubricantError(f"HN alpha * beta = {hn_alpha * hn_beta:g} exceeds 1 (the shear "
+                             "stress would fall as the shear rate rises)")
+    _check_range("k_f", k_f, 0.01, 10.0, "W/(m K)")
+    _check_range("c_p", c_p, 100.0, 1e5, "J/(kg K)")
+    if c > alpha_temps[0] - 40.0:
+        raise LubricantError(f"the Vogel pole c = {c:g} degC lies within 40 K of the first alpha* "
+                             "temperature")
+    return {
+        "name": name.strip(), "vogel_a": a, "vogel_b": b, "vogel_c": c + C0,
+        "alpha_T": [t + C0 for t in alpha_temps], "alpha_star": [float(f"{float(v)!r}e-9") for v in alpha_star],  # exact decimal shift
+        "hn_lambda": hn_lambda, "hn_alpha": hn_alpha, "hn_beta": hn_beta, "k_f": k_f,
+        "c_p": c_p, "rho_15": rho15, "kv40": kv40, "kv100": kv100,
+        "walther": walther_fit(kv40, kv100), "vogel_c_degc": c,
+    }
+
+
+def render(v, notes=()):
+    """The text of a "hypoid-lubricant 1" file."""
+    g = lambda x: repr(float(x))  # noqa: E731  (shortest round-trip representation)
+    wa, wb = v["walther"]
+    lines = [
+        f"# Lubricant {v['name']}: written by `hypoid lubricant` (hypoid/lubricant.py).",
+        f"# Data sheet: KV40 = {v['kv40']:g} mm^2/s, KV100 = {v['kv100']:g} mm^2/s, "
+        f"rho15 = {v['rho_15']:g} kg/m^3.",
+        f"# Vogel fit (physics.md 4.1): Walther A = {wa:.4f}, B = {wb:.4f}; third point at "
+        f"{T_THIRD:g} degC;",
+        f"# a = {v['vogel_a']:.4e} Pa s, b = {v['vogel_b']:.1f} K, c = {v['vogel_c_degc']:.2f} degC.",
+        "# eta_0 [mPa s] at " + ", ".join(
+            f"{t} degC: {1e3 * vogel_eta(v['vogel_a'], v['vogel_b'], v['vogel_c_degc'], t):.1f}"
+            for t in (20, 40, 60, 100, 140)),
+    ]
+    lines += [f"# {n}" for n in notes]
+    lines += [
+        "# Units: SI (Pa s, K, 1/Pa, s, W/(m K), J/(kg K), kg/m^3). Format: docs/data-files.md.",
+        MAGIC,
+        f"name {v['name']}",
+        f"vogel_a {g(v['vogel_a'])}    # Pa s",
+        f"vogel_b {g(v['vogel_b'])}    # K",
+        f"vogel_c {g(v['vogel_c'])}    # K",
+    ]
+    for i in range(3):
+        lines.append(f"alpha_star_T{i + 1} {g(v['alpha_T'][i])}    # K")
+        lines.append(f"alpha_star_{i + 1} {g(v['alpha_star'][i])}    # 1/Pa")
+    lines += [
+        f"hn_lambda {g(v['hn_lambda'])}    # s",
+        f"hn_alpha {g(v['hn_alpha'])}",
+        f"hn_beta {g(v['hn_beta'])}",
+        f"k_f {g(v['k_f'])}    # W/(m K)",
+        f"c_p {g(v['c_p'])}    # J/(kg K)",
+        f"rho_15 {g(v['rho_15'])}    # kg/m^3",
+    ]
+    return "\n".join(lines) + "\n"
+
+
+def builtin_dir():
+    return os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "resources",
+                        "lubricants")
+
+
+def write_builtin(out_dir=None):
+    """Writes the built-in lubricant files; returns their paths."""
+    out_dir = out_dir or builtin_dir()
+    os.makedirs(out_dir, exist_ok=True)
+    paths = []
+    for name, data in BUILTIN.items():
+        text = render(build(name=name, **data), BUILTIN_NOTES[name])
+        path = os.path.join(out_dir, f"{name}.txt")
+        with open(path, "w") as fh:
+            fh.write(text)
+        paths.append(path)
+    return paths
+
+
+def _parser():
+    p = argparse.ArgumentParser(
+        prog="hypoid lubricant",
+        description="Write a lubricant data file (hypoid-lubricant 1) from data-sheet values. "
+                    "The Vogel law is fitted to KV40/KV100/rho15 as in physics.md 4.1.")
+    p.add_argument("--builtin", action="store_true",
+                   help="regenerate the built-in files OS265962.txt and OS265963.txt")
+    p.add_argument("--out-dir", help="directory for --builtin (default: resources/lubricants)")
+    p.add_argument("-o", "--output", help="output file for a user lubricant")
+    p.add_argument("--name", help="lubricant name")
+    p.add_argument("--kv40", type=float, help="kinematic viscosity at 40 degC [mm^2/s]")
+    p.add_argument("--kv100", type=float, help="kinematic viscosity at 100 degC [mm^2/s]")
+    p.add_argument("--rho15", type=float, help="density at 15 degC [kg/m^3]")
+    p.add_argument("--alpha-star", type=float, nargs=3, metavar=("A1", "A2", "A3"),
+                   help="reciprocal asymptotic isoviscous pressure coefficient at the three "
+                        "temperatures [1/GPa]")
+    p.add_argument("--alpha-temps", type=float, nargs=3, metavar=("T1", "T2", "T3"),
+                   default=(40.0, 100.0, 140.0),
+                   help="temperatures of --alpha-star [degC] (default 40 100 140)")
+    p.add_argument("--hn-lambda", type=float, help="Havriliak-Negami relaxation time [s]")
+    p.add_argument("--hn-alpha", type=float, help="Havriliak-Negami alpha [-]")
+    p.add_argument("--hn-beta", type=float, default=1.0, help="Havriliak-Negami beta [-] (1)")
+    p.add_argument("--k-f", type=float, help="thermal conductivity [W/(m K)]")
+    p.add_argument("--c-p", type=float, default=2090.0, help="specific heat [J/(kg K)] (2090)")
+    return p
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
+    parser = _parser()
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:  # argparse has printed its message
+        return int(exc.code or 0)
+    try:
+        if args.builtin:
+            for path in write_builtin(args.out_dir):
+                print(f"wrote {path}")
+            return 0
+        missing = [opt for opt, val in (("--name", args.name), ("--kv40", args.kv40),
+                                        ("--kv100", args.kv100), ("--rho15", args.rho15),
+                                        ("--alpha-star", args.alpha_star),
+                                        ("--hn-lambda", args.hn_lambda),
+                                        ("--hn-alpha", args.hn_alpha), ("--k-f", args.k_f),
+                                        ("-o/--output", args.output)) if val is None]
+        if missing:
+            raise LubricantError("missing " + ", ".join(missing) + " (or use --builtin)")
+        values = build(args.name, args.kv40, args.kv100, args.rho15, tuple(args.alpha_star),
+                       tuple(args.alpha_temps), args.hn_lambda, args.hn_alpha, args.hn_beta,
+                       args.k_f, args.c_p)
+        with open(args.output, "w") as fh:
+            fh.write(render(values))
+        print(f"wrote {args.output}: Vogel a = {values['vogel_a']:.4e} Pa s, "
+              f"b = {values['vogel_b']:.1f} K, c = {values['vogel_c_degc']:.2f} degC")
+        return 0
+    except (LubricantError, OSError) as exc:
+        print(f"hypoid lubricant: error: {exc}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())

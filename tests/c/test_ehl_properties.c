@@ -1,0 +1,492 @@
+/* Properties of the mixed-EHL model: trends, sign and power sanity, guards (no NaN/Inf anywhere
+ * on a wide grid, zero speeds, zero load), and unit checks of the rheology (physics 4) and of the
+ * T_c solver (physics 6.6). */
+#include <float.h>
+#include <string.h>
+
+#include "check.h"
+#include "tribo/ehl.h"
+#include "tribo/rheology.h"
+#include "tribo/thermal.h"
+
+#define C0 273.15
+
+static hg_lubricant oil(int which)
+{
+    hg_lubricant l;
+    memset(&l, 0, sizeof l);
+    strcpy(l.name, which == 2 ? "OS265962" : "OS265963");
+    l.vogel_a = 7.560103250811039e-05;
+    l.vogel_b = 1109.2767960557555;
+    l.vogel_c = 155.39875251733173;
+    l.alpha_T[0] = 40 + C0, l.alpha_T[1] = 100 + C0, l.alpha_T[2] = 140 + C0;
+    if (which == 2) {
+        l.alpha_star[0] = 16.09e-9, l.alpha_star[1] = 11.59e-9, l.alpha_star[2] = 9.38e-9;
+        l.hn_lambda = 7.9e-8, l.hn_alpha = 0.70;
+    } else {
+        l.alpha_star[0] = 19.31e-9, l.alpha_star[1] = 13.89e-9, l.alpha_star[2] = 12.28e-9;
+        l.hn_lambda = 8.0e-8, l.hn_alpha = 0.97;
+    }
+    l.hn_beta = 1.0, l.k_f = 0.18, l.c_p_f = 2090, l.rho_15 = 870;
+    return l;
+}
+
+static hg_pair_contact contact(double W, double scale, double T_bath_C)
+{
+    hg_pair_contact c;
+    c.W = W;
+    c.u_p[0] = 2.46 * scale, c.u_p[1] = 4.28 * scale;
+    c.u_g[0] = 1.87 * scale, c.u_g[1] = 2.00 * scale;
+    c.R_x = 17.65e-3, c.R_y = 2.25, c.T_bath = T_bath_C + C0;
+    return c;
+}
+
+static int all_finite(const hg_pair_friction *o)
+{
+    return isfinite(o->F_f) && isfinite(o->F_v) && isfinite(o->F_b) && isfinite(o->mu) &&
+           isfinite(o->h_c) && isfinite(o->lambda) && isfinite(o->T_c) && isfinite(o->u_e) &&
+           isfinite(o->V_s) && isfinite(o->R_e) && isfinite(o->R_s) && isfinite(o->p_h) &&
+           isfinite(o->g_V) && isfinite(o->g_E);
+}
+
+/* Blok's integral of the Roelands law by brute force: p = p0 (e^t - 1), Simpson in t with the
+ * step scaled to the initial decay rate A Z */
+static double blok_alpha(double Z, double A)
+{
+    double h = 1e-3 / (1.0 + A * Z), sum = 0.0;
+    long i, n = (long)(200.0 / h);
+    if (n % 2) n++;
+    for (i = 0; i <= n; i++) {
+        double t = i * h, e = t - A * expm1(Z * t);
+        if (e < -745.0 && t > 1.0) break;
+        sum += (i == 0 ? 1.0 : (i % 2 ? 4.0 : 2.0)) * exp(e);
+    }
+    return 1.0 / (HG_ROELANDS_P0 * sum * h / 3.0);
+}
+
+/* tau(T) for the generic solver tests */
+static double tau_decreasing(double T, void *ctx, double *d)
+{
+    (void)ctx;
+    *d = -1e7 / 20.0 * exp(-(T - 300.0) / 20.0);
+    return 1e7 * exp(-(T - 300.0) / 20.0);
+}
+static double tau_increasing(double T, void *ctx, double *d)
+{
+    (void)ctx;
+    *d = 1e5 * 0.02 * (T - 300.0);
+    return 1e5 * (1.0 + 0.01 * (T - 300.0) * (T - 300.0));
+}
+static double tau_no_derivative(double T, void *ctx, double *d)
+{
+    double v = tau_decreasing(T, ctx, d);
+    *d = NAN;
+    return v;
+}
+static double tau_at(hg_tau_fn fn, double T)
+{
+    double d;
+    return fn(T, NULL, &d);
+}
+
+int main(void)
+{
+    hg_ehl_params p;
+    hg_lubricant l62 = oil(2), l63 = oil(3), lubs[2];
+    hg_pair_friction o, o2;
+    hg_ehl_stats s;
+    hg_pair_contact c;
+    double warm, T, prev;
+    int i, j;
+    hg_ehl_params_default(&p);
+    lubs[0] = l62, lubs[1] = l63;
+    {
+        char err[256];
+        hg_ehl_params q = p;
+        CHECK(hg_ehl_params_check(&p, err, sizeof err) == 0);
+        q.nu = 0.5;
+        CHECK(hg_ehl_params_check(&q, err, sizeof err) == -1 && strstr(err, "nu") != NULL);
+        q = p;
+        q.sigma_s = 0.0;
+        CHECK(hg_ehl_params_check(&q, err, sizeof err) == -1 && strstr(err, "sigma_s") != NULL);
+        q = p;
+        q.thermal = 2;
+        CHECK(hg_ehl_params_check(&q, err, sizeof err) == -1 && strstr(err, "switch") != NULL);
+        q = p;
+        q.E_star = 230.8e9;
+        q.E = -1.0;
+        CHECK(hg_ehl_params_check(&q, err, sizeof err) == 0);
+    }
+
+    /* --- rheology (physics 4) --- */
+    {
+        const double Tt[] = {20, 40, 60, 80, 100, 120, 140, 160, 200};
+        const double eta[] = {237.6, 85.6, 38.8, 20.6, 12.3, 8.0, 5.6, 4.1, 2.5};
+        for (i = 0; i < 9; i++) CHECK_CLOSE(1e3 * hg_vogel_eta0(&l62, Tt[i] + C0), eta[i], 0.0125, 0);
+    }
+    /* alpha*(T): data points, the 60 degC values, C1 at the ends, monotone 20..200 degC */
+    for (j = 0; j < 2; j++) {
+        const hg_lubricant *l = &lubs[j];
+        double d_in, d_out, a_in, a_out;
+        for (i = 0; i < 3; i++) CHECK_CLOSE(hg_alpha_star(l, l->alpha_T[i], NULL), l->alpha_star[i], 1e-14, 0);
+        CHECK_CLOSE(hg_alpha_star(l, 60 + C0, NULL), j == 0 ? 14.43e-9 : 17.10e-9, 0.001, 0);
+        a_in = hg_alpha_star(l, l->alpha_T[0] + 1e-9, &d_in);
+        a_out = hg_alpha_star(l, l->alpha_T[0] - 1e-9, &d_out);
+        CHECK_CLOSE(a_in, a_out, 1e-9, 0);
+        CHECK_CLOSE(d_in, d_out, 1e-7, 0);
+        a_in = hg_alpha_star(l, l->alpha_T[2] - 1e-9, &d_in);
+        a_out = hg_alpha_star(l, l->alpha_T[2] + 1e-9, &d_out);
+        CHECK_CLOSE(a_in, a_out, 1e-9, 0);
+        CHECK_CLOSE(d_in, d_out, 1e-7, 0);
+        prev = 1.0;
+        for (T = 20 + C0; T <= 200 + C0; T += 0.5) {
+            double a = hg_alpha_star(l, T, NULL);
+            CHECK(a < prev && a > 0.0);
+            prev = a;
+        }
+    }
+    /* Z_simple, the alpha* it implies, Z_exact (physics 4.3 table) */
+    {
+        const int which[] = {0, 1, 0};
+        const double Tc[] = {60, 60, 100}, zs[] = {0.441, 0.522, 0.431};
+        const double implied[] = {11.97e-9, 14.99e-9, 9.17e-9}, ze[] = {0.507, 0.579, 0.509};
+        for (i = 0; i < 3; i++) {
+            const hg_lubricant *l = &lubs[which[i]];
+            double lne = log(hg_vogel_eta0(l, Tc[i] + C0)), A = hg_roelands_A(lne);
+            double al = hg_alpha_star(l, Tc[i] + C0, NULL);
+            double Zs = hg_roelands_Z_simple(al, A), Ze = hg_roelands_Z_exact(al, A, 0.0, NULL, NULL);
+            CHECK_CLOSE(Zs, zs[i], 0.002, 0);
+            CHECK_CLOSE(hg_roelands_alpha_star(Zs, A), implied[i], 0.002, 0);
+            CHECK_CLOSE(blok_alpha(Zs, A), implied[i], 0.002, 0);
+            CHECK_CLOSE(Ze, ze[i], 0.002, 0);
+            CHECK_CLOSE(hg_roelands_alpha_star(Ze, A), al, 1e-13, 0);
+            CHECK_CLOSE(blok_alpha(Ze, A), al, 1e-7, 0);
+            /* partial derivatives against central differences */
+            {
+                double dA, dl, h = 1e-5;
+                (void)hg_roelands_Z_exact(al, A, 0.0, &dA, &dl);
+                CHECK_CLOSE(dA, (hg_roelands_Z_exact(al, A + h, 0.0, NULL, NULL) -
+                                 hg_roelands_Z_exact(al, A - h, 0.0, NULL, NULL)) / (2 * h),
+                            1e-6, 0);
+                CHECK_CLOSE(dl, (hg_roelands_Z_exact(al * exp(h), A, 0.0, NULL, NULL) -
+                                 hg_roelands_Z_exact(al * exp(-h), A, 0.0, NULL, NULL)) / (2 * h),
+                            1e-6, 0);
+            }
+            /* warm starts from anywhere give the same Z */
+            CHECK_CLOSE(hg_roelands_Z_exact(al, A, 0.05, NULL, NULL), Ze, 1e-13, 0);
+            CHECK_CLOSE(hg_roelands_Z_exact(al, A, 5.0, NULL, NULL), Ze, 1e-13, 0);
+        }
+    }
+    /* Z_exact over the whole accepted range: alpha* in [0.1, 100] 1/GPa (the loader's range) and
+     * A in [1, 60]: the Roelands law with that Z has Blok's alpha* equal to the target, checked
+     * with the brute-force integral */
+    {
+        double A, al, worst = 0.0;
+        for (A = 1.0; A <= 60.0; A *= 1.25) {
+            for (al = 1e-10; al <= 1.0001e-7; al *= 1.6) {
+                double Z = hg_roelands_Z_exact(al, A, 0.0, NULL, NULL);
+                worst = fmax(worst, fabs(blok_alpha(Z, A) / al - 1.0));
+                CHECK_CLOSE(hg_roelands_alpha_star(Z, A), al, 1e-13, 0);
+            }
+        }
+        CHECK(worst < 1e-12);
+    }
+    /* Z_exact(T) is smooth: second differences at h = 0.05 K are curvature, not noise */
+    for (j = 0; j < 2; j++) {
+        double h = 0.05, worst = 0.0;
+        for (T = 250.0; T < 600.0; T += 0.7) {
+            double z[3];
+            int k;
+            for (k = 0; k < 3; k++) {
+                double Tk = T + (k - 1) * h, lne = log(hg_vogel_eta0(&lubs[j], Tk));
+                z[k] = hg_roelands_Z_exact(hg_alpha_star(&lubs[j], Tk, NULL), hg_roelands_A(lne), 0.0,
+                                           NULL, NULL);
+            }
+            worst = fmax(worst, fabs(z[0] - 2.0 * z[1] + z[2]) / (h * h));
+        }
+        CHECK(worst < 1e-4); /* |Z''| ~ 1e-5 1/K^2; rounding noise would give ~1e-11/h^2 = 4e-9 */
+    }
+    /* physics 4.3 scale: 80 degC, Z_simple, eta(0.5/1.0/1.5 GPa) = 1.5/22/185 Pa s */
+    {
+        double lne = log(hg_vogel_eta0(&l62, 80 + C0)), A = hg_roelands_A(lne);
+        double Z = hg_roelands_Z_simple(hg_alpha_star(&l62, 80 + C0, NULL), A);
+        CHECK_CLOSE(exp(lne + hg_roelands_ln_ratio(A, Z, log1p(0.5e9 / HG_ROELANDS_P0))), 1.5, 0.04, 0);
+        CHECK_CLOSE(exp(lne + hg_roelands_ln_ratio(A, Z, log1p(1.0e9 / HG_ROELANDS_P0))), 22.0, 0.03, 0);
+        CHECK_CLOSE(exp(lne + hg_roelands_ln_ratio(A, Z, log1p(1.5e9 / HG_ROELANDS_P0))), 185.0, 0.01, 0);
+    }
+    /* eta(p, T) strictly decreasing in T over 40-200 degC, 0.3-1.5 GPa, both oils, both Z */
+    for (j = 0; j < 4; j++) {
+        const hg_lubricant *l = &lubs[j & 1];
+        double pr;
+        for (pr = 0.3e9; pr <= 1.5e9 + 1; pr += 0.2e9) {
+            prev = HUGE_VAL;
+            for (T = 40 + C0; T <= 200 + C0; T += 1.0) {
+                double lne = log(hg_vogel_eta0(l, T)), A = hg_roelands_A(lne);
+                double al = hg_alpha_star(l, T, NULL);
+                double Z = j < 2 ? hg_roelands_Z_simple(al, A) : hg_roelands_Z_exact(al, A, 0.0, NULL, NULL);
+                double lneta = lne + hg_roelands_ln_ratio(A, Z, log1p(pr / HG_ROELANDS_P0));
+                CHECK(lneta < prev);
+                prev = lneta;
+            }
+        }
+    }
+    /* HN factor and cap */
+    CHECK_CLOSE(hg_hn_factor(7.9e-8, 0.70, 1.0, 3.858e6), 1.435, 0.001, 0);
+    CHECK(hg_hn_factor(7.9e-8, 0.70, 1.0, 0.0) == 1.0 && hg_hn_factor(0.0, 0.7, 1.0, 1e6) == 1.0);
+    CHECK(hg_shear_cap(5e7, 0.08, 5e8) == 0.08 * 5e8 && hg_shear_cap(5e7, 0.0, 5e8) == 5e7);
+
+    /* --- thermal helpers and the T_c solver --- */
+    CHECK_CLOSE(hg_coleman_length(5e-3, 2e-4, 3.0, 0.0), 2e-4, 1e-15, 0);
+    CHECK_CLOSE(hg_coleman_length(5e-3, 2e-4, 0.0, 3.0), 5e-3, 1e-15, 0);
+    CHECK(hg_coleman_length(5e-3, 2e-4, 0.0, 0.0) == 2e-4);
+    CHECK_CLOSE(hg_heat_partition(1.0, 1.0, 0.3), 0.5, 1e-15, 0);
+    {
+        hg_tc_problem pb;
+        hg_tc_result r, r2;
+        double warms[] = {NAN, -1.0, 0.0, 300.0, 300.5, 310.0, 330.0, 400.0, 1e4};
+        pb.T_in = 300.0, pb.c0 = 0.5, pb.c1 = 1e-5, pb.T_max = 573.15, pb.tol = 1e-6;
+        pb.max_eval = 100;
+        hg_tc_solve(&pb, tau_decreasing, NULL, NAN, &r);
+        CHECK(r.flags == 0);
+        CHECK_CLOSE(r.T_c, pb.T_in + pb.c0 + pb.c1 * tau_at(tau_decreasing, r.T_c), 0, 1e-6);
+        CHECK_CLOSE(r.tau, tau_at(tau_decreasing, r.T_c), 1e-9, 0);
+        CHECK_CLOSE(r.dT_first, 100.5, 1e-12, 0);
+        CHECK(r.n_eval <= 10);
+        for (i = 0; i < 9; i++) {
+            hg_tc_solve(&pb, tau_decreasing, NULL, warms[i], &r2);
+            CHECK_CLOSE(r2.T_c, r.T_c, 0, 1e-6);
+            CHECK(r2.flags == 0 && r2.n_eval <= 12);
+            /* without a derivative: fixed-point images and Brent alone */
+            hg_tc_solve(&pb, tau_no_derivative, NULL, warms[i], &r2);
+            CHECK_CLOSE(r2.T_c, r.T_c, 0, 1e-6);
+            CHECK(r2.flags == 0 && r2.n_eval <= 16);
+        }
+        hg_tc_solve(&pb, tau_decreasing, NULL, r.T_c + 1e-3, &r2);
+        CHECK(r2.n_eval <= 3);
+        CHECK_CLOSE(r2.T_c, r.T_c, 0, 1e-6);
+        /* a rising tau(T) (not physical here) still converges, or caps */
+        hg_tc_solve(&pb, tau_increasing, NULL, NAN, &r);
+        CHECK(r.flags == 0);
+        CHECK_CLOSE(r.T_c, pb.T_in + pb.c0 + pb.c1 * tau_at(tau_increasing, r.T_c), 0, 1e-6);
+        pb.c1 = 1e-3;
+        hg_tc_solve(&pb, tau_increasing, NULL, NAN, &r);
+        CHECK(r.flags == HG_TC_CAPPED && r.T_c == pb.T_max);
+        hg_tc_solve(&pb, tau_increasing, NULL, 400.0, &r);
+        CHECK(r.flags == HG_TC_CAPPED && r.T_c == pb.T_max);
+        /* no heating */
+        pb.c0 = pb.c1 = 0.0;
+        hg_tc_solve(&pb, tau_decreasing, NULL, 350.0, &r);
+        CHECK(r.T_c == 300.0 && r.flags == 0);
+        /* inlet above the cap */
+        pb.T_in = 600.0, pb.c1 = 1e-5;
+        hg_tc_solve(&pb, tau_decreasing, NULL, NAN, &r);
+        CHECK(r.T_c == 600.0 && r.flags == HG_TC_CAPPED);
+        /* a huge first-guess rise is flagged, and still solved */
+        pb.T_in = 300.0, pb.c0 = 0.0, pb.c1 = 2e-4;
+        hg_tc_solve(&pb, tau_decreasing, NULL, NAN, &r);
+        CHECK(r.flags == HG_TC_HUGE_RISE);
+        CHECK_CLOSE(r.T_c, pb.T_in + pb.c1 * tau_at(tau_decreasing, r.T_c), 0, 1e-6);
+    }
+
+    /* --- the full model --- */
+    /* mu falls as the bath warms: isothermal over 10..100 degC (film and shear both at T_in);
+     * with the thermal model from 35 degC upwards. Below about 20 degC (OS265962) / 30 degC
+     * (OS265963) the thermal mu rises slightly with bath temperature: the thicker cold film
+     * raises the oil shear heating (dT_oil ~ tau h_c), so T_c - T_in grows to 31 K at a 10 degC
+     * bath against 16 K at 40 degC and the shear stress is nearly independent of the bath. */
+    for (j = 0; j < 4; j++) {
+        hg_ehl_params q = p;
+        q.thermal = j < 2;
+        prev = HUGE_VAL;
+        warm = NAN;
+        for (T = q.thermal ? 35.0 : 10.0; T <= 100.0; T += 2.5) {
+            c = contact(2380.0, 1.0, T);
+            hg_ehl_pair(&q, &lubs[j & 1], &c, &warm, &o);
+            CHECK(o.mu < prev);
+            prev = o.mu;
+        }
+    }
+    /* ... while the boundary share rises as the film thins */
+    prev = -1.0;
+    for (T = 20.0; T <= 140.0; T += 5.0) {
+        c = contact(2380.0, 1.0, T);
+        hg_ehl_pair(&p, &l62, &c, &warm, &o);
+        CHECK(o.F_b / o.F_f > prev);
+        prev = o.F_b / o.F_f;
+    }
+    /* higher alpha* -> more viscous friction (and thicker film); OS265963 above OS265962 */
+    {
+        hg_lubricant hi = l62;
+        for (i = 0; i < 3; i++) hi.alpha_star[i] *= 1.1;
+        c = contact(2380.0, 1.0, 40.0);
+        warm = NAN;
+        hg_ehl_pair(&p, &l62, &c, &warm, &o);
+        warm = NAN;
+        hg_ehl_pair(&p, &hi, &c, &warm, &o2);
+        CHECK(o2.F_v > o.F_v && o2.h_c > o.h_c && o2.mu > o.mu);
+        warm = NAN;
+        hg_ehl_pair(&p, &l63, &c, &warm, &o2);
+        CHECK(o2.mu > o.mu);
+        /* isothermal friction is above thermal friction */
+        {
+            hg_ehl_params q = p;
+            q.thermal = 0;
+            hg_ehl_pair(&q, &l62, &c, &warm, &o2);
+            CHECK(o2.mu > 2.0 * o.mu && o2.T_c == c.T_bath + 20.0);
+        }
+    }
+    /* sign, power and energy sanity on the pitch point over loads and speeds */
+    for (i = 0; i < 2; i++) {
+        double W, sc;
+        for (W = 10.0; W <= 20000.0; W *= 2.0) {
+            for (sc = 0.01; sc <= 8.0; sc *= 2.0) {
+                c = contact(W, sc, 40.0);
+                warm = NAN;
+                hg_ehl_pair_ex(&p, &lubs[i], &c, &warm, &o, &s);
+                CHECK(all_finite(&o));
+                CHECK(o.F_v >= 0.0 && o.F_b >= 0.0 && o.F_f >= o.F_v);
+                CHECK_CLOSE(o.F_f, o.F_v + o.F_b, 1e-15, 0);
+                CHECK_CLOSE(o.mu, o.F_f / W, 1e-15, 0);
+                CHECK(o.T_c >= c.T_bath + 20.0);
+                /* eq. 14: T_c = T_in + dT_f + dT_oil at the solution */
+                CHECK_CLOSE(o.T_c, c.T_bath + 20.0 + s.dT_flash + s.dT_oil, 0, 2e-6);
+                CHECK(s.flags == 0 || s.flags == HG_EHL_HUGE_RISE);
+                CHECK(o.h_c >= HG_EHL_H_MIN && o.lambda > 0.0 && o.p_h > 0.0);
+            }
+        }
+    }
+    /* h_c rises with speed at fixed load */
+    prev = 0.0;
+    for (T = 0.01; T < 10.0; T *= 1.5) {
+        c = contact(2380.0, T, 40.0);
+        hg_ehl_pair(&p, &l62, &c, &warm, &o);
+        CHECK(o.h_c > prev);
+        prev = o.h_c;
+    }
+    /* the warm start changes nothing but the work */
+    {
+        hg_ehl_stats s2;
+        c = contact(2380.0, 1.0, 40.0);
+        warm = NAN;
+        hg_ehl_pair_ex(&p, &l62, &c, &warm, &o, &s);
+        c.u_p[0] *= 1.001;
+        warm = o.T_c;
+        hg_ehl_pair_ex(&p, &l62, &c, &warm, &o, &s2);
+        CHECK(s2.n_eval <= 4 && s2.n_eval < s.n_eval);
+        warm = NAN;
+        hg_ehl_pair(&p, &l62, &c, &warm, &o2);
+        CHECK_CLOSE(o2.T_c, o.T_c, 0, 2e-6);
+        CHECK_CLOSE(o2.mu, o.mu, 1e-7, 0);
+    }
+    /* smooth in the state: third differences of mu along a sequence of bath temperatures
+     * 1 mK apart, warm-started like an ODE solver would, and cold-started, show no solver noise
+     * (the true third differences are ~1e-14 here) */
+    for (j = 0; j < 2; j++) {
+        double mu[4] = {0, 0, 0, 0}, worst = 0.0;
+        warm = NAN;
+        for (i = 0; i < 300; i++) {
+            c = contact(2380.0, 1.0, 40.0 + 1e-3 * i);
+            if (j) warm = NAN;
+            hg_ehl_pair(&p, &l62, &c, &warm, &o);
+            mu[0] = mu[1], mu[1] = mu[2], mu[2] = mu[3], mu[3] = o.mu;
+            if (i >= 3) worst = fmax(worst, fabs(mu[3] - 3.0 * mu[2] + 3.0 * mu[1] - mu[0]) / o.mu);
+        }
+        printf("%s starts: max |third difference of mu| / mu at 1 mK: %.1e\n", j ? "cold" : "warm",
+               worst);
+        CHECK(worst < 1e-8);
+    }
+    /* limiting shear cap */
+    {
+        hg_ehl_params q = p;
+        q.Lambda_cap = 0.005;
+        q.thermal = 0;
+        c = contact(2380.0, 1.0, 40.0);
+        hg_ehl_pair_ex(&q, &l63, &c, &warm, &o, &s);
+        CHECK(s.flags & HG_EHL_TAU_CAPPED);
+        CHECK_CLOSE(s.tau, 0.005 * s.hertz.p_m, 1e-14, 0);
+    }
+    /* zero load and tiny load: no friction, T_c = T_in, film fields 0 */
+    {
+        const double loads[] = {0.0, 0.999, -5.0};
+        for (i = 0; i < 3; i++) {
+            c = contact(loads[i], 1.0, 40.0);
+            warm = 400.0;
+            hg_ehl_pair_ex(&p, &l62, &c, &warm, &o, &s);
+            CHECK(o.F_f == 0.0 && o.F_v == 0.0 && o.F_b == 0.0 && o.mu == 0.0);
+            CHECK(o.h_c == 0.0 && o.lambda == 0.0 && o.p_h == 0.0);
+            CHECK(o.T_c == c.T_bath + 20.0 && warm == o.T_c && all_finite(&o));
+            CHECK(s.flags == HG_EHL_NO_CONTACT);
+            CHECK_CLOSE(o.u_e, 3.814, 0.001, 0);
+        }
+    }
+    /* zero entrainment, zero sliding, both zero */
+    {
+        const double up[4][2] = {{1.0, 2.0}, {3.0, 1.0}, {0.0, 0.0}, {0.0, 0.0}};
+        const double ug[4][2] = {{-1.0, -2.0}, {3.0, 1.0}, {0.0, 0.0}, {2.0, 0.0}};
+        for (i = 0; i < 4; i++) {
+            c = contact(2380.0, 1.0, 40.0);
+            memcpy(c.u_p, up[i], sizeof c.u_p);
+            memcpy(c.u_g, ug[i], sizeof c.u_g);
+            warm = NAN;
+            hg_ehl_pair_ex(&p, &l62, &c, &warm, &o, &s);
+            CHECK(all_finite(&o));
+            CHECK(o.F_f >= 0.0 && o.T_c >= c.T_bath + 20.0);
+            if (i == 1 || i == 2) CHECK(o.V_s == 0.0 && o.T_c == c.T_bath + 20.0);
+            if (i == 0 || i == 2) CHECK(o.u_e == 0.0 && o.h_c == HG_EHL_H_MIN);
+        }
+    }
+    /* the grid: loads 0-20 kN x speeds 0.01-30 m/s (several directions) x T -30..160 degC and
+     * beyond, both oils, every switch combination: never NaN/Inf, T_c within [T_in, cap] */
+    {
+        const double loads[] = {0.0, 1.0, 3.0, 50.0, 500.0, 2380.0, 8000.0, 20000.0};
+        const double speeds[] = {0.0, 0.01, 0.1, 1.0, 5.0, 15.0, 30.0};
+        const double temps[] = {-273.15, -150.0, -60.0, -30.0, 0.0, 40.0, 100.0, 160.0, 250.0, 600.0, 5000.0};
+        const double dirs[][4] = {{0.5, 0.87, 0.38, 0.41}, {1, 0, -1, 0},  {0, 1, 0, 1},
+                                  {1, 0, 1, 0},            {0.2, 1, -0.2, -1}, {1, 1, -0.3, 0.4}};
+        long n = 0, bad = 0, capped = 0;
+        int w, v, t, d, sw;
+        for (sw = 0; sw < 32; sw++) {
+            hg_ehl_params q = p;
+            q.hertz = sw & 1 ? HG_HERTZ_APPROX : HG_HERTZ_EXACT;
+            q.roelands_Z = sw & 2 ? HG_Z_EXACT : HG_Z_SIMPLE;
+            q.shear_pressure = sw & 4 ? HG_SHEAR_P_MAX : HG_SHEAR_P_MEAN;
+            q.thermal = !(sw & 8);
+            q.Lambda_cap = sw & 16 ? 0.08 : 0.0;
+            for (j = 0; j < 2; j++)
+                for (w = 0; w < 8; w++)
+                    for (v = 0; v < 7; v++)
+                        for (d = 0; d < 6; d++)
+                            for (t = 0; t < 11; t++) {
+                                double T_in;
+                                c = contact(loads[w], 1.0, temps[t]);
+                                c.u_p[0] = speeds[v] * dirs[d][0], c.u_p[1] = speeds[v] * dirs[d][1];
+                                c.u_g[0] = speeds[v] * dirs[d][2], c.u_g[1] = speeds[v] * dirs[d][3];
+                                T_in = c.T_bath + 20.0;
+                                warm = (t & 1) ? NAN : T_in + 30.0;
+                                hg_ehl_pair_ex(&q, &lubs[j], &c, &warm, &o, &s);
+                                n++;
+                                if (!all_finite(&o) || o.F_f < 0.0 || o.mu < 0.0 ||
+                                    o.T_c < T_in || o.T_c > fmax(T_in, q.T_c_max) ||
+                                    warm != o.T_c || (s.flags & HG_EHL_TC_NOT_CONVERGED)) {
+                                    if (bad++ < 5)
+                                        fprintf(stderr, "bad: sw %d oil %d W %g v %g dir %d T %g: "
+                                                "mu %g T_c %g flags %d\n", sw, j, loads[w],
+                                                speeds[v], d, temps[t], o.mu, o.T_c, s.flags);
+                                }
+                                if (s.flags & HG_EHL_TC_CAPPED) capped++;
+                            }
+        }
+        printf("grid: %ld evaluations, %ld bad, %ld with T_c at the cap\n", n, bad, capped);
+        CHECK(bad == 0);
+    }
+    /* non-finite or invalid geometry: no friction, no NaN in the forces */
+    c = contact(2380.0, 1.0, 40.0);
+    c.R_x = 0.0;
+    hg_ehl_pair(&p, &l62, &c, &warm, &o);
+    CHECK(o.F_f == 0.0 && all_finite(&o));
+    c = contact(2380.0, 1.0, 40.0);
+    c.u_p[0] = NAN;
+    hg_ehl_pair(&p, &l62, &c, &warm, &o);
+    CHECK(o.F_f == 0.0 && o.mu == 0.0);
+    CHECK_DONE();
+}
