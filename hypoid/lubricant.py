@@ -186,7 +186,8 @@ def build(name, kv40, kv100, rho15, alpha_star, alpha_temps, hn_lambda, hn_alpha
                              "temperature")
     return {
         "name": name.strip(), "vogel_a": a, "vogel_b": b, "vogel_c": c + C0,
-        "alpha_T": [t + C0 for t in alpha_temps], "alpha_star": [float(f"{float(v)!r}e-9") for v in alpha_star],  # exact decimal shift
+        "alpha_T": [t + C0 for t in alpha_temps],
+        "alpha_star": [float(f"{float(v)!r}e-9") for v in alpha_star],  # 1/GPa -> 1/Pa, exactly
         "hn_lambda": hn_lambda, "hn_alpha": hn_alpha, "hn_beta": hn_beta, "k_f": k_f,
         "c_p": c_p, "rho_15": rho15, "kv40": kv40, "kv100": kv100,
         "walther": walther_fit(kv40, kv100), "vogel_c_degc": c,
@@ -203,7 +204,8 @@ def render(v, notes=()):
         f"rho15 = {v['rho_15']:g} kg/m^3.",
         f"# Vogel fit (physics.md 4.1): Walther A = {wa:.4f}, B = {wb:.4f}; third point at "
         f"{T_THIRD:g} degC;",
-        f"# a = {v['vogel_a']:.4e} Pa s, b = {v['vogel_b']:.1f} K, c = {v['vogel_c_degc']:.2f} degC.",
+        f"# a = {v['vogel_a']:.4e} Pa s, b = {v['vogel_b']:.1f} K, "
+        f"c = {v['vogel_c_degc']:.2f} degC.",
         "# eta_0 [mPa s] at " + ", ".join(
             f"{t} degC: {1e3 * vogel_eta(v['vogel_a'], v['vogel_b'], v['vogel_c_degc'], t):.1f}"
             for t in (20, 40, 60, 100, 140)),

@@ -69,7 +69,8 @@ def main(argv):
         for n, v in ((2.5, a), (1.5, b)):
             ref = f_n_check(n, x)
             if abs(v / ref - 1.0) > 1e-12:
-                raise SystemExit(f"quadrature and trapezoid cross-check disagree: n={n} lam={x} {v} {ref}")
+                raise SystemExit(f"quadrature and trapezoid cross-check disagree: "
+                                 f"n={n} lam={x} {v} {ref}")
     ln_f = [math.log(v) for v in f52]
     dln_f = [-2.5 * b / a for a, b in zip(f52, f32)]
     scale = math.log(f52[-1]) - ln_asym(2.5, LAM_MAX, N_ASYM)
@@ -130,7 +131,8 @@ static const double hg_f52_dln[HG_F52_COUNT] = {{
 """
     with open(out, "w") as fh:
         fh.write(text)
-    print(f"wrote {out}: {count} nodes, midpoint error {worst:.2e}, asymptotic error {worst_asym:.2e}")
+    print(f"wrote {out}: {count} nodes, midpoint error {worst:.2e}, "
+          f"asymptotic error {worst_asym:.2e}")
     return 0
 
 

@@ -82,7 +82,8 @@ typedef struct {
 void hg_ehl_params_default(hg_ehl_params *p);
 
 /* Checks the parameters (positive moduli and material data, 0 <= nu < 0.5, non-negative
- * friction and roughness data, valid switches). Returns 0, or -1 with a message naming the field. */
+ * friction and roughness data, valid switches). Returns 0, or -1 with a message naming the
+ * field. */
 int hg_ehl_params_check(const hg_ehl_params *p, char *err, size_t errlen);
 
 /* One flank pair. *T_c_warm: the caller's warm start for T_c [K] (NaN or <= 0: none), set to the

@@ -122,13 +122,15 @@ int main(void)
     {
         const double Tt[] = {20, 40, 60, 80, 100, 120, 140, 160, 200};
         const double eta[] = {237.6, 85.6, 38.8, 20.6, 12.3, 8.0, 5.6, 4.1, 2.5};
-        for (i = 0; i < 9; i++) CHECK_CLOSE(1e3 * hg_vogel_eta0(&l62, Tt[i] + C0), eta[i], 0.0125, 0);
+        for (i = 0; i < 9; i++)
+            CHECK_CLOSE(1e3 * hg_vogel_eta0(&l62, Tt[i] + C0), eta[i], 0.0125, 0);
     }
     /* alpha*(T): data points, the 60 degC values, C1 at the ends, monotone 20..200 degC */
     for (j = 0; j < 2; j++) {
         const hg_lubricant *l = &lubs[j];
         double d_in, d_out, a_in, a_out;
-        for (i = 0; i < 3; i++) CHECK_CLOSE(hg_alpha_star(l, l->alpha_T[i], NULL), l->alpha_star[i], 1e-14, 0);
+        for (i = 0; i < 3; i++)
+            CHECK_CLOSE(hg_alpha_star(l, l->alpha_T[i], NULL), l->alpha_star[i], 1e-14, 0);
         CHECK_CLOSE(hg_alpha_star(l, 60 + C0, NULL), j == 0 ? 14.43e-9 : 17.10e-9, 0.001, 0);
         a_in = hg_alpha_star(l, l->alpha_T[0] + 1e-9, &d_in);
         a_out = hg_alpha_star(l, l->alpha_T[0] - 1e-9, &d_out);
@@ -154,7 +156,8 @@ int main(void)
             const hg_lubricant *l = &lubs[which[i]];
             double lne = log(hg_vogel_eta0(l, Tc[i] + C0)), A = hg_roelands_A(lne);
             double al = hg_alpha_star(l, Tc[i] + C0, NULL);
-            double Zs = hg_roelands_Z_simple(al, A), Ze = hg_roelands_Z_exact(al, A, 0.0, NULL, NULL);
+            double Zs = hg_roelands_Z_simple(al, A);
+            double Ze = hg_roelands_Z_exact(al, A, 0.0, NULL, NULL);
             CHECK_CLOSE(Zs, zs[i], 0.002, 0);
             CHECK_CLOSE(hg_roelands_alpha_star(Zs, A), implied[i], 0.002, 0);
             CHECK_CLOSE(blok_alpha(Zs, A), implied[i], 0.002, 0);
@@ -199,8 +202,8 @@ int main(void)
             int k;
             for (k = 0; k < 3; k++) {
                 double Tk = T + (k - 1) * h, lne = log(hg_vogel_eta0(&lubs[j], Tk));
-                z[k] = hg_roelands_Z_exact(hg_alpha_star(&lubs[j], Tk, NULL), hg_roelands_A(lne), 0.0,
-                                           NULL, NULL);
+                double al = hg_alpha_star(&lubs[j], Tk, NULL);
+                z[k] = hg_roelands_Z_exact(al, hg_roelands_A(lne), 0.0, NULL, NULL);
             }
             worst = fmax(worst, fabs(z[0] - 2.0 * z[1] + z[2]) / (h * h));
         }
@@ -210,9 +213,10 @@ int main(void)
     {
         double lne = log(hg_vogel_eta0(&l62, 80 + C0)), A = hg_roelands_A(lne);
         double Z = hg_roelands_Z_simple(hg_alpha_star(&l62, 80 + C0, NULL), A);
-        CHECK_CLOSE(exp(lne + hg_roelands_ln_ratio(A, Z, log1p(0.5e9 / HG_ROELANDS_P0))), 1.5, 0.04, 0);
-        CHECK_CLOSE(exp(lne + hg_roelands_ln_ratio(A, Z, log1p(1.0e9 / HG_ROELANDS_P0))), 22.0, 0.03, 0);
-        CHECK_CLOSE(exp(lne + hg_roelands_ln_ratio(A, Z, log1p(1.5e9 / HG_ROELANDS_P0))), 185.0, 0.01, 0);
+        const double P0 = HG_ROELANDS_P0;
+        CHECK_CLOSE(exp(lne + hg_roelands_ln_ratio(A, Z, log1p(0.5e9 / P0))), 1.5, 0.04, 0);
+        CHECK_CLOSE(exp(lne + hg_roelands_ln_ratio(A, Z, log1p(1.0e9 / P0))), 22.0, 0.03, 0);
+        CHECK_CLOSE(exp(lne + hg_roelands_ln_ratio(A, Z, log1p(1.5e9 / P0))), 185.0, 0.01, 0);
     }
     /* eta(p, T) strictly decreasing in T over 40-200 degC, 0.3-1.5 GPa, both oils, both Z */
     for (j = 0; j < 4; j++) {
@@ -223,7 +227,8 @@ int main(void)
             for (T = 40 + C0; T <= 200 + C0; T += 1.0) {
                 double lne = log(hg_vogel_eta0(l, T)), A = hg_roelands_A(lne);
                 double al = hg_alpha_star(l, T, NULL);
-                double Z = j < 2 ? hg_roelands_Z_simple(al, A) : hg_roelands_Z_exact(al, A, 0.0, NULL, NULL);
+                double Z = j < 2 ? hg_roelands_Z_simple(al, A)
+                                 : hg_roelands_Z_exact(al, A, 0.0, NULL, NULL);
                 double lneta = lne + hg_roelands_ln_ratio(A, Z, log1p(pr / HG_ROELANDS_P0));
                 CHECK(lneta < prev);
                 prev = lneta;
@@ -440,7 +445,8 @@ int main(void)
     {
         const double loads[] = {0.0, 1.0, 3.0, 50.0, 500.0, 2380.0, 8000.0, 20000.0};
         const double speeds[] = {0.0, 0.01, 0.1, 1.0, 5.0, 15.0, 30.0};
-        const double temps[] = {-273.15, -150.0, -60.0, -30.0, 0.0, 40.0, 100.0, 160.0, 250.0, 600.0, 5000.0};
+        const double temps[] = {-273.15, -150.0, -60.0, -30.0, 0.0,   40.0,
+                                100.0,   160.0,  250.0, 600.0, 5000.0};
         const double dirs[][4] = {{0.5, 0.87, 0.38, 0.41}, {1, 0, -1, 0},  {0, 1, 0, 1},
                                   {1, 0, 1, 0},            {0.2, 1, -0.2, -1}, {1, 1, -0.3, 0.4}};
         long n = 0, bad = 0, capped = 0;
@@ -459,8 +465,9 @@ int main(void)
                             for (t = 0; t < 11; t++) {
                                 double T_in;
                                 c = contact(loads[w], 1.0, temps[t]);
-                                c.u_p[0] = speeds[v] * dirs[d][0], c.u_p[1] = speeds[v] * dirs[d][1];
-                                c.u_g[0] = speeds[v] * dirs[d][2], c.u_g[1] = speeds[v] * dirs[d][3];
+                                double sp = speeds[v];
+                                c.u_p[0] = sp * dirs[d][0], c.u_p[1] = sp * dirs[d][1];
+                                c.u_g[0] = sp * dirs[d][2], c.u_g[1] = sp * dirs[d][3];
                                 T_in = c.T_bath + 20.0;
                                 warm = (t & 1) ? NAN : T_in + 30.0;
                                 hg_ehl_pair_ex(&q, &lubs[j], &c, &warm, &o, &s);

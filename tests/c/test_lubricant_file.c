@@ -142,7 +142,8 @@ int main(int argc, char **argv)
     CHECK(ref.vogel_c == 155.35 && ref.alpha_star[1] == 11.59e-9);
 
     /* errors */
-    CHECK(load_variant("k_f", NULL, &l, err) == -1 && has(err, "missing key 'k_f'", "hg_test_lubricant.tmp"));
+    CHECK(load_variant("k_f", NULL, &l, err) == -1 &&
+          has(err, "missing key 'k_f'", "hg_test_lubricant.tmp"));
     CHECK(load_variant("vogel_b", "vogel_b 11O9.3", &l, err) == -1 &&
           has(err, "line 5", "not a finite number"));
     CHECK(load_variant("vogel_b", "vogel_b nan", &l, err) == -1 && has(err, "line 5", "vogel_b"));
