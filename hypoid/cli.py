@@ -7,6 +7,10 @@ TOOLS = {
     "tca": ("hypoid.tca", "tooth contact data: surrogate gear sets, import of a user's TCA table"),
     "lubricant": ("hypoid.lubricant", "lubricant data files from data-sheet values"),
     "run": ("hypoid.scenario", "simulate one scenario and write results and plots"),
+    "effmap": ("hypoid.effmap", "efficiency maps of the full model for the FMU's map level"),
+    "sweep": ("hypoid.sweep", "grid of steady-state points or continuation sweeps (dask, resume)"),
+    "study": ("hypoid.study", "the paper's studies: tables, plots and a report (default, full)"),
+    "regress": ("hypoid.regress", "compare FMU outputs with tests/regression (--update)"),
 }
 
 

@@ -7,47 +7,47 @@
 #include "hg_vars.h"
 
 #define SLIDE_EPS 1e-4 /* regularisation of the sliding direction [m/s] (physics 8.8) */
+#define SPIN_EPS 1e-3  /* regularisation of the rotation direction of the map losses [rad/s] */
 
-double hg_backlash_f(double x, double b, int mode)
+static double shaft1_torque(const hg_dyn_params *p, const double *y)
 {
-    if (mode == HG_MODE_DRIVE) return x - b;
-    if (mode == HG_MODE_BACK) return x + b;
-    return 0.0;
+    return p->k_t1 * y[HG_Y_TWIST1] + p->c_t1 * (y[HG_Y_W_S] - y[HG_Y_W_P]);
 }
 
-int hg_backlash_mode(double x, double b)
+static double shaft2_torque(const hg_dyn_params *p, const double *y)
 {
-    if (x >= b) return HG_MODE_DRIVE;
-    if (x <= -b) return HG_MODE_BACK;
-    return HG_MODE_FREE;
+    return p->k_t2 * y[HG_Y_TWIST2] + p->c_t2 * (y[HG_Y_W_G] - y[HG_Y_W_W]);
 }
 
+/* Mesh stiffness, radii, transmission error, f(x), x' and the elastic mesh load. */
 static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn_eval *ev)
 {
-    double theta, w_p = y[HG_Y_W_P];
-    if (p->mesh_varying) {
-        theta = p->gear->N_p * y[HG_Y_PHI_P];
-        hg_gearset_mesh(p->gear, theta, &ev->mesh);
-        ev->f = hg_backlash_f(y[HG_Y_X], p->b, mode);
+    double w_p = y[HG_Y_W_P];
+    if (p->mesh == HG_MESH_MODEL_VARYING) {
+        hg_gearset_mesh(p->gear, p->gear->N_p * y[HG_Y_PHI_P], &ev->mesh);
+        ev->f = hg_backlash_f(&p->backlash, y[HG_Y_X], mode);
+        ev->Phi = hg_backlash_potential(&p->backlash, y[HG_Y_X], mode);
     } else {
         memset(&ev->mesh, 0, sizeof ev->mesh);
         ev->mesh.k_m = p->k_m0;
         ev->mesh.R_p = p->R_p0;
         ev->f = y[HG_Y_X];
+        ev->Phi = 0.5 * ev->f * ev->f;
     }
     ev->R_g = ev->mesh.R_p * p->ratio;
+    if (p->mesh == HG_MESH_MODEL_RIGID) return;
     /* eq. 25: x' = R_p w_p - R_g w_g - e_0', e_0' = (de_0/dtheta) N_p w_p */
-    ev->xdot = ev->mesh.R_p * w_p - ev->R_g * y[HG_Y_W_G] -
-               (p->mesh_varying ? ev->mesh.de_0 * p->gear->N_p * w_p : 0.0);
+    ev->xdot = ev->mesh.R_p * w_p - ev->R_g * y[HG_Y_W_G] - ev->mesh.de_0 * p->gear->N_p * w_p;
     ev->W_t = ev->mesh.k_m * ev->f + p->c_m * ev->xdot;
 }
 
-/* Friction torques from the sliding direction (physics 9.1): T_fp w_p + T_fg w_g = -P_loss. */
+/* Friction torques from the sliding direction (physics 9.1): T_fp w_p + T_fg w_g = -P_loss.
+ * Pairs carry |W_t|: on the coast flank the drive flank's contact data stand in for its own. */
 static void pair_friction(const hg_dyn_params *p, const hg_dyn_inputs *u, const double *y,
                           int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
     int k, with_contact = p->friction.model != HG_FRICTION_MODEL_NONE || all_pairs;
-    double w_p = y[HG_Y_W_P], w_g = y[HG_Y_W_G], W = ev->W_t > 0.0 ? ev->W_t : 0.0;
+    double w_p = y[HG_Y_W_P], w_g = y[HG_Y_W_G], W = fabs(ev->W_t);
     hg_pair_geometry geo;
     hg_gearset_pairs(p->gear, p->gear->N_p * y[HG_Y_PHI_P], with_contact, &geo);
     for (k = 0; k < HG_MAX_PAIRS; k++) {
@@ -71,6 +71,44 @@ static void pair_friction(const hg_dyn_params *p, const hg_dyn_inputs *u, const 
         ev->T_fg += norm * (vs_x * geo.ug[k][0] + vs_y * geo.ug[k][1]);
         ev->P_loss += norm * (vs_x * vs_x + vs_y * vs_y);
     }
+}
+
+/* The map level: the loss (1 - eta) of the power entering from the driving side, as a torque on
+ * the pinion, so that T_fp w_p = -P_loss exactly. */
+static void map_loss(const hg_dyn_params *p, const hg_dyn_inputs *u, const double *y,
+                     hg_dyn_eval *ev)
+{
+    double w_p = y[HG_Y_W_P], T_1 = shaft1_torque(p, y), T_2p = shaft2_torque(p, y) / p->ratio;
+    int coast = -T_2p * w_p > T_1 * w_p; /* power enters from the wheel side */
+    double T_in = coast ? T_2p : T_1;
+    double eta = hg_effmap_eta(p->map, coast ? HG_MAP_COAST : HG_MAP_DRIVE, w_p, T_in, u->T_bath);
+    double T_loss = (1.0 - eta) * fabs(T_in), s = sqrt(w_p * w_p + SPIN_EPS * SPIN_EPS);
+    ev->T_fp = -T_loss * w_p / s;
+    ev->P_loss = T_loss * w_p * w_p / s;
+}
+
+static void losses(const hg_dyn_params *p, const hg_dyn_inputs *u, const double *y,
+                   int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
+{
+    if (p->friction.model == HG_FRICTION_MODEL_MAP)
+        map_loss(p, u, y, ev);
+    else if (p->friction.model != HG_FRICTION_MODEL_NONE || all_pairs)
+        pair_friction(p, u, y, all_pairs, T_c_warm, ev);
+}
+
+/* Rigid mesh: the pinion-gear body's acceleration and the mesh load it implies. Friction needs
+ * the load and changes the acceleration: one pass from the frictionless load suffices (the
+ * friction torques change W_t by a fraction mu of the inertial part). */
+static void rigid_mesh(const hg_dyn_params *p, const hg_dyn_inputs *u, const double *y,
+                       int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
+{
+    double i = p->ratio, J = p->I_p + p->I_g / (i * i);
+    double T_1 = shaft1_torque(p, y), T_2 = shaft2_torque(p, y), acc;
+    acc = (T_1 - T_2 / i) / J;
+    ev->W_t = (p->I_g * acc / i + T_2) / ev->R_g;
+    losses(p, u, y, all_pairs, T_c_warm, ev);
+    ev->acc_p = (T_1 - T_2 / i + ev->T_fp + ev->T_fg / i) / J;
+    ev->W_t = (p->I_g * ev->acc_p / i + T_2 - ev->T_fg) / ev->R_g;
 }
 
 static void efficiency(const double *y, const hg_dyn_inputs *u, hg_dyn_eval *ev)
@@ -97,29 +135,35 @@ void hg_dyn_evaluate(const hg_dyn_params *p, const hg_dyn_inputs *u, int mode, c
                   p->K_i * y[HG_Y_GOV];
     else
         ev->T_w = u->T_w;
-    if (p->friction.model != HG_FRICTION_MODEL_NONE || all_pairs)
-        pair_friction(p, u, y, all_pairs, T_c_warm, ev);
+    if (p->mesh == HG_MESH_MODEL_RIGID)
+        rigid_mesh(p, u, y, all_pairs, T_c_warm, ev);
+    else
+        losses(p, u, y, all_pairs, T_c_warm, ev);
     efficiency(y, u, ev);
     ev->P_damp = p->c_t1 * d1 * d1 + p->c_t2 * d2 * d2 + p->c_m * ev->xdot * ev->xdot;
-    if (p->mesh_varying) {
+    if (p->mesh == HG_MESH_MODEL_VARYING) {
         double N_p_w = p->gear->N_p * y[HG_Y_W_P];
-        ev->P_exc = -ev->W_t * ev->mesh.de_0 * N_p_w + 0.5 * ev->mesh.dk_m * N_p_w * ev->f * ev->f;
+        ev->P_exc = -ev->W_t * ev->mesh.de_0 * N_p_w + ev->mesh.dk_m * N_p_w * ev->Phi;
     }
 }
 
 void hg_dyn_derivatives(const hg_dyn_params *p, const hg_dyn_inputs *u, const double *y,
                         const hg_dyn_eval *ev, double *ydot)
 {
-    double T_1 = p->k_t1 * y[HG_Y_TWIST1] + p->c_t1 * (y[HG_Y_W_S] - y[HG_Y_W_P]);
-    double T_2 = p->k_t2 * y[HG_Y_TWIST2] + p->c_t2 * (y[HG_Y_W_G] - y[HG_Y_W_W]);
+    double T_1 = shaft1_torque(p, y), T_2 = shaft2_torque(p, y);
     ydot[HG_Y_TWIST1] = y[HG_Y_W_S] - y[HG_Y_W_P];
     ydot[HG_Y_TWIST2] = y[HG_Y_W_G] - y[HG_Y_W_W];
     ydot[HG_Y_PHI_P] = y[HG_Y_W_P];
     ydot[HG_Y_X] = ev->xdot;
-    ydot[HG_Y_W_S] = (u->T_s - T_1) / p->I_s;                                  /* eq. 20 */
-    ydot[HG_Y_W_P] = (T_1 - ev->mesh.R_p * ev->W_t + ev->T_fp) / p->I_p;       /* eq. 21 */
-    ydot[HG_Y_W_G] = (ev->R_g * ev->W_t - T_2 + ev->T_fg) / p->I_g;            /* eq. 22, D3 */
-    ydot[HG_Y_W_W] = (T_2 - ev->T_w) / p->I_w;                                 /* eq. 23 */
+    ydot[HG_Y_W_S] = (u->T_s - T_1) / p->I_s;                                      /* eq. 20 */
+    if (p->mesh == HG_MESH_MODEL_RIGID) {
+        ydot[HG_Y_W_P] = ev->acc_p;
+        ydot[HG_Y_W_G] = ev->acc_p / p->ratio;
+    } else {
+        ydot[HG_Y_W_P] = (T_1 - ev->mesh.R_p * ev->W_t + ev->T_fp) / p->I_p;      /* eq. 21 */
+        ydot[HG_Y_W_G] = (ev->R_g * ev->W_t - T_2 + ev->T_fg) / p->I_g;           /* eq. 22, D3 */
+    }
+    ydot[HG_Y_W_W] = (T_2 - ev->T_w) / p->I_w;                                     /* eq. 23 */
     ydot[HG_Y_GOV] = p->speed_governor ? y[HG_Y_W_W] - u->w_set / p->ratio : 0.0;
     ydot[HG_Y_E_IN] = u->T_s * y[HG_Y_W_S];
     ydot[HG_Y_E_OUT] = ev->T_w * y[HG_Y_W_W];
@@ -133,6 +177,7 @@ double hg_dyn_stored_energy(const hg_dyn_params *p, const double *y, const hg_dy
 {
     double ws = y[HG_Y_W_S], wp = y[HG_Y_W_P], wg = y[HG_Y_W_G], ww = y[HG_Y_W_W];
     double t1 = y[HG_Y_TWIST1], t2 = y[HG_Y_TWIST2];
+    double mesh = p->mesh == HG_MESH_MODEL_RIGID ? 0.0 : ev->mesh.k_m * ev->Phi;
     return 0.5 * (p->I_s * ws * ws + p->I_p * wp * wp + p->I_g * wg * wg + p->I_w * ww * ww) +
-           0.5 * (p->k_t1 * t1 * t1 + p->k_t2 * t2 * t2 + ev->mesh.k_m * ev->f * ev->f);
+           0.5 * (p->k_t1 * t1 * t1 + p->k_t2 * t2 * t2) + mesh;
 }

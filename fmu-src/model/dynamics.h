@@ -1,8 +1,12 @@
 /* The 4-DoF torsional hypoid pair (paper eqs. 20-25 with correction D3, physics.md 8.1) as a pure
- * right-hand side, with the energy audit and efficiency integrals carried as extra states. */
+ * right-hand side, with the energy audit and efficiency integrals carried as extra states.
+ * With a rigid mesh the pinion and gear turn as one body (x stays 0, w_g = w_p N_p/N_g) and the
+ * mesh load follows from the gear's equation of motion. */
 #ifndef HG_DYNAMICS_H
 #define HG_DYNAMICS_H
 
+#include "model/backlash.h"
+#include "model/effmap.h"
 #include "model/friction.h"
 #include "model/gearset.h"
 
@@ -18,20 +22,18 @@ enum {
     HG_NY
 };
 
-/* Backlash contact modes: the right-hand side uses the branch of f(x) of the current mode, so no
- * internal step ever straddles a contact change; root-finding switches the mode. */
-enum { HG_MODE_BACK = -1, HG_MODE_FREE = 0, HG_MODE_DRIVE = 1 };
-
 typedef struct {
     double I_s, I_p, I_g, I_w;   /* [kg m^2] */
     double k_t1, k_t2;           /* [N m/rad] */
     double c_t1, c_m, c_t2;      /* [N m s/rad], [N s/m], [N m s/rad] */
-    double b;                    /* half backlash [m] */
-    int mesh_varying;            /* 0: constant k_m0, R_p0, no e_0, no backlash */
+    int mesh;                    /* HG_MESH_MODEL_RIGID, _MEAN (constant k_m0, R_p0, no e_0, no
+                                    backlash) or _VARYING */
+    hg_backlash backlash;        /* b = 0 unless the mesh varies */
     double k_m0, R_p0;           /* mean mesh stiffness [N/m] and radius [m] */
     double ratio;                /* N_g / N_p */
     const hg_gearset *gear;      /* series already scaled by k_m_scale and e_0_scale */
     hg_friction_config friction;
+    const hg_effmap *map;        /* friction_model = map: efficiency of the rigid gear */
     int speed_governor;          /* load_mode = speed */
     double K_p, K_i;             /* governor gains [N m s/rad], [N m/rad] */
 } hg_dyn_params;
@@ -44,10 +46,12 @@ typedef struct {
     hg_mesh_point mesh;
     double R_g;        /* gear contact radius R_p N_g/N_p [m] (D4) */
     double f;          /* backlash function f(x) [m] */
+    double Phi;        /* its potential [m^2]: the mesh spring stores k_m Phi */
     double xdot;       /* dx/dt [m/s] */
     double W_t;        /* mesh load k_m f + c xdot [N] */
     double T_w;        /* wheel-end torque, input or governor [N m] */
     double T_fp, T_fg; /* friction torques on pinion and gear [N m] */
+    double acc_p;      /* pinion acceleration of the rigid mesh [rad/s^2] */
     double P_loss, P_in, eta;
     double P_damp, P_exc; /* damper dissipation and parametric excitation power [W] */
     double W_pair[HG_MAX_PAIRS];
@@ -65,11 +69,5 @@ void hg_dyn_derivatives(const hg_dyn_params *p, const hg_dyn_inputs *u, const do
 
 /* Kinetic plus elastic energy at y [J]. */
 double hg_dyn_stored_energy(const hg_dyn_params *p, const double *y, const hg_dyn_eval *ev);
-
-/* Backlash function f(x) of the mode's branch (Kahraman & Singh 1990; b is the half backlash). */
-double hg_backlash_f(double x, double b, int mode);
-
-/* The contact mode that x lies in. */
-int hg_backlash_mode(double x, double b);
 
 #endif

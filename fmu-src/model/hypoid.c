@@ -24,12 +24,14 @@ struct hg_model {
     void *log_ctx;
     hg_gearset gear;
     hg_lubricant lub;
+    hg_effmap map; /* friction_model = map only */
     hg_dyn_params p;
     hg_solver *solver;
     double atol[HG_NY];
     double rtol;
     double max_step;      /* user's max_step, 0 = automatic */
     int steps_per_mesh;   /* per mesh cycle: the fixed step (newmark) or the automatic max_step */
+    int fixed_step;       /* the solver takes fixed steps (newmark) */
     double window_angle; /* pinion angle of one averaging window [rad] */
     hg_runtime rt;
 };
@@ -67,6 +69,7 @@ void hg_model_free(hg_model *m)
 {
     if (!m) return;
     hg_solver_free(m->solver);
+    hg_effmap_free(&m->map);
     free(m->resource_dir);
     free(m);
 }
@@ -118,6 +121,36 @@ static int load_lubricant(hg_model *m, const hg_vars *v, char *err, size_t errle
                  v->lubricant_file[0] ? v->lubricant_file : name, why);
         return -1;
     }
+    return 0;
+}
+
+/* The map level: a rigid gear whose efficiency comes from a map of the full model. */
+static int load_map(hg_model *m, const hg_vars *v, char *err, size_t errlen)
+{
+    char path[4096], builtin[96], why[HG_ERRLEN];
+    hg_effmap_free(&m->map);
+    m->p.map = NULL;
+    if (v->friction_model != HG_FRICTION_MODEL_MAP) return 0;
+    if (v->mesh_model != HG_MESH_MODEL_RIGID) {
+        snprintf(err, errlen, "friction_model = map describes the whole gear's losses: it needs "
+                 "mesh_model = rigid (mesh_model is %d)", v->mesh_model);
+        return -1;
+    }
+    if (!v->efficiency_map_file[0] && v->lubricant_file[0]) {
+        snprintf(err, errlen, "friction_model = map with lubricant_file = '%s' needs an "
+                 "efficiency_map_file made for that lubricant (hypoid effmap)", v->lubricant_file);
+        return -1;
+    }
+    snprintf(builtin, sizeof builtin, "maps/gearset%d_%s.txt", v->gear_set,
+             v->lubricant == 2 ? "OS265963" : "OS265962");
+    if (resolve_path(m, v->efficiency_map_file, builtin, path, sizeof path, err, errlen)) return -1;
+    if (hg_effmap_load(path, &m->map, why, sizeof why)) {
+        snprintf(err, errlen, "%s = '%s': %s",
+                 v->efficiency_map_file[0] ? "efficiency_map_file" : "built-in efficiency map",
+                 v->efficiency_map_file[0] ? v->efficiency_map_file : builtin, why);
+        return -1;
+    }
+    m->p.map = &m->map;
     return 0;
 }
 
@@ -194,8 +227,11 @@ static void dynamics_params(hg_model *m, const hg_vars *v)
     p->I_w = v->I_w;
     p->k_t1 = v->k_t1;
     p->k_t2 = v->k_t2;
-    p->mesh_varying = v->mesh_model == HG_MESH_MODEL_VARYING;
-    p->b = p->mesh_varying ? v->b : 0.0;
+    p->mesh = v->mesh_model;
+    p->backlash.b = p->mesh == HG_MESH_MODEL_VARYING ? v->b : 0.0;
+    p->backlash.eps = p->mesh == HG_MESH_MODEL_VARYING && v->backlash_model == HG_BACKLASH_MODEL_SMOOTHED
+                          ? v->backlash_smoothing
+                          : 0.0;
     p->k_m0 = m->gear.k_m.mean;
     p->R_p0 = m->gear.R_p.mean;
     p->ratio = (double)m->gear.N_g / m->gear.N_p;
@@ -224,8 +260,9 @@ static void tolerances(hg_model *m, const hg_vars *v)
     t[HG_Y_E_IN] = t[HG_Y_E_OUT] = t[HG_Y_E_FRIC] = t[HG_Y_E_DAMP] = t[HG_Y_E_EXC] = E;
     t[HG_Y_ETA2] = 1e-9;
     m->rtol = v->rtol;
-    m->max_step = v->solver == HG_SOLVER_NEWMARK ? 0.0 : v->max_step;
-    m->steps_per_mesh = v->solver == HG_SOLVER_NEWMARK ? v->steps_per_mesh_cycle : STEPS_PER_MESH;
+    m->fixed_step = v->solver == HG_SOLVER_NEWMARK;
+    m->max_step = m->fixed_step ? 0.0 : v->max_step;
+    m->steps_per_mesh = m->fixed_step ? v->steps_per_mesh_cycle : STEPS_PER_MESH;
 }
 
 static void inputs_of(const hg_vars *v, hg_dyn_inputs *u)
@@ -248,7 +285,7 @@ static void initial_state(hg_model *m, const hg_vars *v, double t0)
     rt->t = rt->t_u0 = t0;
     inputs_of(v, &rt->u0);
     rt->u_end = rt->u0;
-    if (m->p.mesh_varying)
+    if (m->p.mesh == HG_MESH_MODEL_VARYING)
         hg_gearset_mesh(&m->gear, 0.0, &mesh);
     else {
         mesh.k_m = m->p.k_m0;
@@ -256,10 +293,12 @@ static void initial_state(hg_model *m, const hg_vars *v, double t0)
     }
     y[HG_Y_TWIST1] = v->T_s / v->k_t1;
     y[HG_Y_TWIST2] = T_w / v->k_t2;
-    y[HG_Y_X] = v->T_s / (mesh.R_p * mesh.k_m) + (v->T_s > 0 ? m->p.b : v->T_s < 0 ? -m->p.b : 0);
+    if (m->p.mesh != HG_MESH_MODEL_RIGID)
+        y[HG_Y_X] = v->T_s / (mesh.R_p * mesh.k_m) +
+                    (v->T_s > 0 ? m->p.backlash.b : v->T_s < 0 ? -m->p.backlash.b : 0.0);
     y[HG_Y_W_S] = y[HG_Y_W_P] = v->w_p0;
     y[HG_Y_W_G] = y[HG_Y_W_W] = v->w_p0 / m->p.ratio;
-    rt->mode = m->p.mesh_varying ? hg_backlash_mode(y[HG_Y_X], m->p.b) : HG_MODE_DRIVE;
+    rt->mode = hg_backlash_mode(y[HG_Y_X], m->p.backlash.b);
     for (k = 0; k < HG_MAX_PAIRS; k++) rt->T_c_warm[k] = -1.0;
     rt->eta_cycle = 1.0;
     rt->restart = 1;
@@ -288,10 +327,13 @@ int hg_model_setup(hg_model *m, hg_vars *v, double t0, char *err, size_t errlen)
     if (load_gearset(m, v, err, errlen) || load_lubricant(m, v, err, errlen)) return -1;
     dynamics_params(m, v);
     ehl_params(m, v);
+    if (load_map(m, v, err, errlen)) return -1;
     if (damping(m, v, err, errlen)) return -1;
     v->R_p0 = m->p.R_p0;
     v->k_m0 = m->p.k_m0;
     v->ratio = m->p.ratio;
+    v->N_p = m->gear.N_p;
+    v->N_g = m->gear.N_g;
     tolerances(m, v);
     m->window_angle = v->n_avg_cycles * TWO_PI / m->gear.N_p;
     initial_state(m, v, t0);
@@ -328,12 +370,19 @@ static int rhs(double t, const double *y, double *ydot, void *user)
     return 0;
 }
 
+/* Contact changes are events only for the exact dead zone of the varying mesh. */
+static int exact_backlash(const hg_dyn_params *p)
+{
+    return p->mesh == HG_MESH_MODEL_VARYING && p->backlash.eps == 0.0;
+}
+
 static int roots(double t, const double *y, double *g, void *user)
 {
     hg_model *m = user;
     (void)t;
-    g[0] = m->p.mesh_varying ? y[HG_Y_X] - m->p.b : 1.0;
-    g[1] = m->p.mesh_varying ? y[HG_Y_X] + m->p.b : 1.0;
+    int events = exact_backlash(&m->p);
+    g[0] = events ? y[HG_Y_X] - m->p.backlash.b : 1.0;
+    g[1] = events ? y[HG_Y_X] + m->p.backlash.b : 1.0;
     g[2] = y[HG_Y_PHI_P] - (m->rt.win_phi0 + m->window_angle);
     g[3] = y[HG_Y_PHI_P] - (m->rt.win_phi0 - m->window_angle);
     return 0;
@@ -348,7 +397,7 @@ static void backlash_event(hg_model *m, const int *dir)
     /* dir[0]: root of x - b, dir[1]: root of x + b; +1 upwards, -1 downwards */
     rt->mode = dir[0] > 0 ? HG_MODE_DRIVE : dir[1] < 0 ? HG_MODE_BACK : HG_MODE_FREE;
     /* the root lies on the boundary: put x exactly there so the restart does not see it again */
-    rt->y[HG_Y_X] = dir[0] != 0 ? m->p.b : -m->p.b;
+    rt->y[HG_Y_X] = dir[0] != 0 ? m->p.backlash.b : -m->p.backlash.b;
     if (rt->mode != old) {
         rt->n_impacts++;
         logf_(m, "logEvents", "t = %.9f s: mesh contact %s -> %s", rt->t,
@@ -403,7 +452,8 @@ static int begin_step(hg_model *m, const hg_vars *v, const hg_dyn_inputs *du, ch
     rt->du = *du;
     rt->t_u0 = rt->t;
     wrap_angle(m);
-    if (h_max <= 0.0) {
+    /* automatic: resolve the mesh cycle, unless there is no mesh dynamics and the step is free */
+    if (h_max <= 0.0 && (m->fixed_step || m->p.mesh != HG_MESH_MODEL_RIGID)) {
         f_mesh = fabs(rt->y[HG_Y_W_P]) * m->gear.N_p / TWO_PI;
         h_max = f_mesh > 0.0 ? 1.0 / (m->steps_per_mesh * f_mesh) : MAX_AUTO_STEP;
         if (h_max > MAX_AUTO_STEP) h_max = MAX_AUTO_STEP;
@@ -498,7 +548,9 @@ static void write_outputs(hg_model *m, hg_vars *v)
     v->P_loss_cycle = rt->P_loss_cycle;
     v->T_w_out = ev.T_w;
     v->k_m = ev.mesh.k_m;
-    v->contact = rt->mode;
+    v->contact = exact_backlash(&m->p) ? rt->mode
+                 : m->p.mesh == HG_MESH_MODEL_VARYING ? hg_backlash_mode(y[HG_Y_X], m->p.backlash.b)
+                 : ev.W_t >= 0.0 ? HG_MODE_DRIVE : HG_MODE_BACK;
     v->n_impacts = rt->n_impacts;
     solver_stats(m, v);
     v->E_in = y[HG_Y_E_IN];

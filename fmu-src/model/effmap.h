@@ -1,0 +1,28 @@
+/* Efficiency maps (`hypoid-effmap 1`, docs/data-files.md): conjunctional efficiency of the full
+ * model tabulated over pinion speed, pinion torque and bath temperature, for drive and coast,
+ * interpolated trilinearly and held constant beyond the table's edges. */
+#ifndef HG_EFFMAP_H
+#define HG_EFFMAP_H
+
+#include <stddef.h>
+
+#define HG_MAP_MAX_AXIS 64
+
+enum { HG_MAP_DRIVE = 0, HG_MAP_COAST = 1 };
+
+typedef struct {
+    char name[128];
+    int n_w, n_T, n_K;
+    double w[HG_MAP_MAX_AXIS]; /* pinion speeds [rad/s], ascending, >= 0 */
+    double T[HG_MAP_MAX_AXIS]; /* pinion torques [N m], ascending, >= 0 */
+    double K[HG_MAP_MAX_AXIS]; /* bath temperatures [K], ascending */
+    double *eta;               /* [direction][K][w][T], in (0, 1] */
+} hg_effmap;
+
+int hg_effmap_load(const char *path, hg_effmap *map, char *err, size_t errlen);
+void hg_effmap_free(hg_effmap *map);
+
+/* Efficiency at |pinion speed| w, |pinion torque| T, bath temperature K in a direction. */
+double hg_effmap_eta(const hg_effmap *map, int direction, double w, double T, double K);
+
+#endif
