@@ -5,31 +5,12 @@
 #include <string.h>
 
 #include "check.h"
+#include "paper_oils.h"
 #include "tribo/ehl.h"
 #include "tribo/rheology.h"
 #include "tribo/thermal.h"
 
-#define C0 273.15
 
-static hg_lubricant oil(int which)
-{
-    hg_lubricant l;
-    memset(&l, 0, sizeof l);
-    strcpy(l.name, which == 2 ? "OS265962" : "OS265963");
-    l.vogel_a = 7.560103250811039e-05;
-    l.vogel_b = 1109.2767960557555;
-    l.vogel_c = 155.39875251733173;
-    l.alpha_T[0] = 40 + C0, l.alpha_T[1] = 100 + C0, l.alpha_T[2] = 140 + C0;
-    if (which == 2) {
-        l.alpha_star[0] = 16.09e-9, l.alpha_star[1] = 11.59e-9, l.alpha_star[2] = 9.38e-9;
-        l.hn_lambda = 7.9e-8, l.hn_alpha = 0.70;
-    } else {
-        l.alpha_star[0] = 19.31e-9, l.alpha_star[1] = 13.89e-9, l.alpha_star[2] = 12.28e-9;
-        l.hn_lambda = 8.0e-8, l.hn_alpha = 0.97;
-    }
-    l.hn_beta = 1.0, l.k_f = 0.18, l.c_p_f = 2090, l.rho_15 = 870;
-    return l;
-}
 
 static hg_pair_contact contact(double W, double scale, double T_bath_C)
 {
@@ -92,7 +73,7 @@ static double tau_at(hg_tau_fn fn, double T)
 int main(void)
 {
     hg_ehl_params p;
-    hg_lubricant l62 = oil(2), l63 = oil(3), lubs[2];
+    hg_lubricant l62 = paper_oil(62), l63 = paper_oil(63), lubs[2];
     hg_pair_friction o, o2;
     hg_ehl_stats s;
     hg_pair_contact c;
