@@ -1,6 +1,6 @@
 /* Efficiency maps (`hypoid-effmap 1`, docs/data-files.md): conjunctional efficiency of the full
  * model tabulated over pinion speed, pinion torque and bath temperature, for drive and coast,
- * interpolated trilinearly and held constant beyond the table's edges. */
+ * interpolated by natural cubic splines along each axis (C2) and held constant beyond the edges. */
 #ifndef HG_EFFMAP_H
 #define HG_EFFMAP_H
 
@@ -17,6 +17,7 @@ typedef struct {
     double T[HG_MAP_MAX_AXIS]; /* pinion torques [N m], ascending, >= 0 */
     double K[HG_MAP_MAX_AXIS]; /* bath temperatures [K], ascending */
     double *eta;               /* [direction][K][w][T], in (0, 1] */
+    double *M_w, *M_T, *M_K;   /* per axis: node values -> spline second derivatives (n x n) */
 } hg_effmap;
 
 int hg_effmap_load(const char *path, hg_effmap *map, char *err, size_t errlen);

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #define N_ROOTS 4             /* x - b, x + b, window end forwards, window end backwards */
-#define WRAP_PERIODS 64       /* wrap the pinion angle after this many load-share periods */
+#define WRAP_PERIODS 1024     /* wrap the pinion angle after this many load-share periods */
 #define MAX_EVENTS_PER_STEP 100000
 #define MAX_AUTO_STEP 1e-3    /* [s] */
 
@@ -196,9 +196,12 @@ int hg_model_step(hg_model *m, hg_vars *v, const hg_dyn_inputs *du, double h, ch
                      rt->t);
             return -1;
         }
-        if (dir[0] || dir[1]) backlash_event(m, dir);
         if (dir[2] || dir[3]) window_event(m);
-        if (hg_solver_restart(m->solver, rt->t, rt->y, err, errlen)) return -1;
+        /* a contact change alters the right-hand side: restart; a window end changes nothing
+         * the integrator sees but its root function, which it re-evaluates at the root */
+        if ((dir[0] || dir[1]) &&
+            (backlash_event(m, dir), hg_solver_restart(m->solver, rt->t, rt->y, err, errlen)))
+            return -1;
     }
     rt->t = t_end;
     inputs_at(rt, t_end, &rt->u_end);

@@ -62,6 +62,7 @@ static int configure(cvode_solver *s, const hg_solver_options *opt, char *err, s
         (flag = CVodeSetErrHandlerFn(s->cvode, error_handler, s)) != CV_SUCCESS ||
         (flag = CVodeSVtolerances(s->cvode, opt->rtol, s->atol)) != CV_SUCCESS ||
         (flag = CVodeSetMaxNumSteps(s->cvode, opt->max_steps)) != CV_SUCCESS ||
+        (flag = CVodeSetStabLimDet(s->cvode, opt->method == HG_METHOD_BDF)) != CV_SUCCESS ||
         (flag = CVodeSetLinearSolver(s->cvode, s->LS, s->A)) != CV_SUCCESS)
         return fail(err, errlen, "CVODE set-up", flag, s);
     if (s->n_roots > 0 && (flag = CVodeRootInit(s->cvode, s->n_roots, root_adapter)) != CV_SUCCESS)

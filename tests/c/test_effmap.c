@@ -1,0 +1,87 @@
+/* Efficiency maps: the interpolant reproduces the table at its nodes and any linear data
+ * exactly, is C1 (and C2) across grid lines, holds beyond the edges; bad files get clear errors. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "check.h"
+#include "io/datafile.h"
+#include "model/effmap.h"
+
+#define PATH "/tmp/hg_test_effmap.txt"
+
+static const double W[] = {10, 50, 100, 300}, T[] = {10, 50, 100}, K[] = {300, 350};
+
+static double linear(double w, double t, double k) { return 0.9 + 1e-4 * w + 2e-4 * t + 1e-4 * (k - 300); }
+static double wiggly(int d, int a, int b, int c) { return 0.95 + 0.01 * sin(1.0 + a + 2 * b + 3 * c + 5 * d); }
+
+/* Writes a 4 x 3 x 2 map of f; `extra` replaces the speeds line when not NULL. */
+static void write_map(double (*f)(int, int, int, int), const char *speeds)
+{
+    FILE *fp = fopen(PATH, "w");
+    int d, a, b, c;
+    fprintf(fp, "hypoid-effmap 1\nname test\n%s\ntorques 10 50 100\ntemperatures 300 350\n",
+            speeds ? speeds : "speeds 10 50 100 300");
+    for (d = 0; d < 2; d++)
+        for (c = 0; c < 2; c++) {
+            fprintf(fp, "%s.%d", d ? "coast" : "drive", c + 1);
+            for (a = 0; a < 4; a++)
+                for (b = 0; b < 3; b++) fprintf(fp, " %.17g", f(d, a, b, c));
+            fprintf(fp, "\n");
+        }
+    fclose(fp);
+}
+
+static double lin_node(int d, int a, int b, int c) { (void)d; return linear(W[a], T[b], K[c]); }
+
+static void interpolation(void)
+{
+    hg_effmap m;
+    char err[HG_ERRLEN] = "";
+    int a, b, c;
+    double w, t, k, h = 1e-6;
+    write_map(wiggly, NULL);
+    CHECK(hg_effmap_load(PATH, &m, err, sizeof err) == 0);
+    for (a = 0; a < 4; a++) /* nodes */
+        for (b = 0; b < 3; b++)
+            for (c = 0; c < 2; c++)
+                CHECK_CLOSE(hg_effmap_eta(&m, HG_MAP_COAST, W[a], T[b], K[c]), wiggly(1, a, b, c), 1e-14, 0);
+    /* C1 across the grid line w = 50 and t = 50 */
+    for (t = 12; t < 100; t += 7.3) {
+        double left = (hg_effmap_eta(&m, 0, 50 - h, t, 320) - hg_effmap_eta(&m, 0, 50 - 2 * h, t, 320)) / h;
+        double right = (hg_effmap_eta(&m, 0, 50 + 2 * h, t, 320) - hg_effmap_eta(&m, 0, 50 + h, t, 320)) / h;
+        CHECK_CLOSE(left, right, 1e-3, 1e-7);
+    }
+    /* held beyond the edges */
+    CHECK(hg_effmap_eta(&m, 0, 1000, 5, 250) == wiggly(0, 3, 0, 0));
+    CHECK(hg_effmap_eta(&m, 0, -300, -100, 400) == wiggly(0, 3, 2, 1)); /* |w|, |T| */
+    hg_effmap_free(&m);
+    write_map(lin_node, NULL);
+    CHECK(hg_effmap_load(PATH, &m, err, sizeof err) == 0);
+    for (w = 10; w <= 300; w += 13.7) /* linear data: reproduced exactly everywhere inside */
+        for (t = 10; t <= 100; t += 9.1)
+            for (k = 300; k <= 350; k += 12.5)
+                CHECK_CLOSE(hg_effmap_eta(&m, 0, w, t, k), linear(w, t, k), 1e-13, 0);
+    hg_effmap_free(&m);
+}
+
+static void expect_error(const char *speeds, double (*f)(int, int, int, int), const char *want)
+{
+    hg_effmap m;
+    char err[HG_ERRLEN] = "";
+    write_map(f, speeds);
+    CHECK(hg_effmap_load(PATH, &m, err, sizeof err) != 0);
+    if (!strstr(err, want)) fprintf(stderr, "error '%s' lacks '%s'\n", err, want);
+    CHECK(strstr(err, want) != NULL && strstr(err, PATH) != NULL);
+}
+
+static double too_high(int d, int a, int b, int c) { return d == 1 && a == 2 && b == 1 && c == 0 ? 1.2 : 0.98; }
+
+int main(void)
+{
+    interpolation();
+    expect_error("speeds 10 100 50 300", wiggly, "ascending");
+    expect_error("speeds 10 50 100", wiggly, "at most 9");
+    expect_error(NULL, too_high, "efficiency 1.2");
+    CHECK_DONE();
+}
