@@ -3,4 +3,4 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 scripts/setup.sh
-.venv/bin/hypoid run --fmu build/HypoidGearPair.fmu --out results "$@"
+.venv/bin/hypoid study default --fmu build/HypoidGearPair.fmu --out results "$@"

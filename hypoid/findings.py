@@ -1,0 +1,343 @@
+"""The paper's findings (Paouris et al. 2016, §3) as numbers computed from study tables, with a
+verdict each. Used by the report and by tests/python/test_paper_findings.py (same functions, a
+smaller grid). Efficiency is eta_rms, the RMS over 50 mesh cycles of steady state."""
+
+import pathlib
+
+import numpy as np
+import pandas as pd
+
+BUILTIN_LUBRICANTS = {1: "OS265962", 2: "OS265963"}
+# the reference conditions of the paper's figures (other columns at the FMU's start values)
+# (every parameter a study varies besides gear set, lubricant, torque and speed belongs here)
+REFERENCE = {"T_bath": 313.15, "friction_model": "ehl_thermal", "mesh_model": "varying",
+             "k_f": 0.0, "roelands_z": "simple", "e_0_scale": 1.0, "k_m_scale": 1.0}
+DIP_MIN = 2e-4  # an efficiency dip counts when 0.02 percentage points below the trend
+FADE = 0.35  # ... and has faded when below this fraction of the low-torque dips
+EDGE_RPM = 200.0  # the trend is the chord between the grid speeds this far from the resonance
+BAND_RPM = 120.0  # the dip is looked for within this distance of the resonance
+BRANCH_MIN_UM = 3.0  # up and down DTE peak-to-peak differ by this much: two branches
+
+
+# ---------------------------------------------------------------------------- selection
+def prepare(df):
+    """Status-ok rows, empty strings for missing file names, a lubricant label column."""
+    if df is None or df.empty:
+        return pd.DataFrame()
+    df = df[df["status"] == "ok"].copy()
+    if "lubricant_file" in df:
+        df["lubricant_file"] = df["lubricant_file"].fillna("").astype(str)
+    df["lubricant_name"] = [lubricant_label(r) for r in df.itertuples()]
+    return df
+
+
+def lubricant_label(row):
+    path = getattr(row, "lubricant_file", "") or ""
+    if path:
+        name = _file_name(path)
+    else:
+        name = BUILTIN_LUBRICANTS.get(int(row.lubricant), f"lubricant {row.lubricant}")
+    k_f = getattr(row, "k_f", 0.0)
+    return f"{name}, k_f {k_f:g}" if k_f and np.isfinite(k_f) else name
+
+
+def _file_name(path):
+    p = pathlib.Path(path)
+    try:
+        for line in p.read_text().splitlines():
+            if line.startswith("name "):
+                return line[5:].strip()
+    except OSError:
+        pass
+    return p.stem
+
+
+def select(df, **eq):
+    """Rows at the reference conditions with the given column values (floats to 1e-9)."""
+    if df.empty:
+        return df
+    mask = np.ones(len(df), bool)
+    for col, val in {**REFERENCE, **eq}.items():
+        if col not in df:
+            continue
+        if isinstance(val, str):
+            mask &= df[col].astype(str).to_numpy() == val
+        else:
+            mask &= np.isclose(df[col].to_numpy(float), float(val), rtol=0, atol=1e-9)
+    return df[mask]
+
+
+def curve(df, y="eta_rms", **eq):
+    """Series y by speed_rpm (mean of duplicates)."""
+    sel = select(df, **eq)
+    return sel.groupby("speed_rpm")[y].mean().sort_index()
+
+
+def reference_lubricants(df, torque=100.0):
+    """eta_rms by speed for OS265962, OS265963 and the swapped-alpha* variant (gear set 1)."""
+    base = dict(gear_set=1, T_s=torque)
+    one = curve(df, gear_set=1, T_s=torque, lubricant=1, lubricant_file="")
+    two = curve(df, gear_set=1, T_s=torque, lubricant=2, lubricant_file="")
+    files = select(df, **base)
+    files = files[files["lubricant_file"] != ""] if "lubricant_file" in files else files.iloc[:0]
+    swap = files.groupby("speed_rpm")["eta_rms"].mean().sort_index()
+    return one, two, swap
+
+
+def resonances(df, gear_set):
+    """{'f2': rpm, 'f3': rpm} of a gear set (from the calculated parameters in the table)."""
+    sel = df[df["gear_set"] == gear_set]
+    if sel.empty:
+        return {}
+    return {"f2": float(sel["n_f2_rpm"].iloc[0]), "f3": float(sel["n_f3_rpm"].iloc[0])}
+
+
+# ---------------------------------------------------------------------------- measures
+def dip(eta, n_res):
+    """Depth of the efficiency dip at a resonance: the largest drop of eta below the chord
+    between the grid speeds EDGE_RPM either side; nan when the grid does not bracket it."""
+    s = eta.dropna()
+    lo = s[s.index <= n_res - EDGE_RPM]
+    hi = s[s.index >= n_res + EDGE_RPM]
+    inner = s[(s.index - n_res).__abs__() <= BAND_RPM]
+    if lo.empty or hi.empty or inner.empty:
+        return float("nan")
+    (n0, e0), (n1, e1) = (lo.index[-1], lo.iloc[-1]), (hi.index[0], hi.iloc[0])
+    chord = e0 + (e1 - e0) * (inner.index.to_numpy() - n0) / (n1 - n0)
+    return float(np.max(chord - inner.to_numpy()))
+
+
+def branches(cont, gear_set, torque):
+    """Up and down branches of a continuation sweep merged by speed."""
+    sel = select(cont, gear_set=gear_set, T_s=torque)
+    if sel.empty:
+        return pd.DataFrame()
+    cols = ["DTE_pp_um", "DTE_min_minus_b_um", "contact_loss_fraction", "eta_rms"]
+    up = sel[sel["branch"] == "up"].groupby("speed_rpm")[cols].mean()
+    down = sel[sel["branch"] == "down"].groupby("speed_rpm")[cols].mean()
+    return up.merge(down, left_index=True, right_index=True, suffixes=("_up", "_down"))
+
+
+def jump(cont, gear_set, torque, n_res, half_width=250.0):
+    """Two-branch (hysteresis) band and separation near a resonance."""
+    b = branches(cont, gear_set, torque)
+    if b.empty:
+        return None
+    b = b[(b.index - n_res).__abs__() <= half_width]
+    if b.empty:
+        return None
+    diff = (b["DTE_pp_um_up"] - b["DTE_pp_um_down"]).abs()
+    two = b[diff > BRANCH_MIN_UM]
+    return {"speeds_two_branches": [float(x) for x in two.index],
+            "max_branch_gap_um": float(diff.max()),
+            "max_DTE_pp_um": float(max(b["DTE_pp_um_up"].max(), b["DTE_pp_um_down"].max())),
+            "min_DTE_min_minus_b_um": float(min(b["DTE_min_minus_b_um_up"].min(),
+                                                b["DTE_min_minus_b_um_down"].min())),
+            "max_contact_loss": float(max(b["contact_loss_fraction_up"].max(),
+                                          b["contact_loss_fraction_down"].max()))}
+
+
+# ---------------------------------------------------------------------------- findings
+def _finding(fid, figure, paper, measure, ok, at=""):
+    verdict = "diagnostic" if ok is None else ("reproduced" if ok else "not reproduced")
+    return {"id": fid, "figure": figure, "paper": paper, "at": at, "this FMU": measure,
+            "verdict": verdict}
+
+
+def lubricant_ranking(pts, torque=100.0):
+    one, two, _ = reference_lubricants(pts, torque)
+    gap = (one - two).dropna()
+    if gap.empty:
+        return _finding("F1", "6a", "OS265963 (higher alpha*) less efficient at every speed",
+                        "no data", None)
+    return _finding("F1", "6a", "OS265963 (higher alpha*) less efficient at every speed",
+                    f"eta(OS265962) - eta(OS265963) = {100 * gap.min():.3f} to "
+                    f"{100 * gap.max():.3f} %-points over {len(gap)} speeds "
+                    f"({gap.index.min():g}-{gap.index.max():g} rpm)", bool((gap > 0).all()),
+                    f"{torque:g} N.m")
+
+
+def swapped_alpha(pts, torque=100.0):
+    one, two, swap = reference_lubricants(pts, torque)
+    closure = ((swap - two) / (one - two)).dropna()
+    text = "OS265963 with OS265962's alpha* data is almost as efficient as OS265962"
+    if closure.empty:
+        return _finding("F2", "7", text, "no data", None)
+    return _finding("F2", "7", text,
+                    f"share of the efficiency gap closed: {100 * closure.min():.0f} to "
+                    f"{100 * closure.max():.0f} % (median {100 * closure.median():.0f} %) over "
+                    f"{len(closure)} speeds", bool((closure >= 0.5).all()), f"{torque:g} N.m")
+
+
+def resonance_dips(pts, mode, gear_set=1, low=(50.0, 100.0), high=(200.0, 300.0), suffix="",
+                   **where):
+    """Dip at the resonance of `mode` ('f2' or 'f3') for each torque, and the verdict."""
+    n_res = resonances(pts, gear_set).get(mode)
+    if n_res is None:
+        return None, {}
+    dips = {t: dip(curve(pts, gear_set=gear_set, lubricant=1, lubricant_file="", T_s=t,
+                         **where), n_res) for t in (*low, *high)}
+    lo = [dips[t] for t in low]
+    hi = [dips[t] for t in high]
+    ok = None
+    if all(np.isfinite(lo + hi)):
+        ok = min(lo) > DIP_MIN and max(hi) < FADE * min(lo)
+    measure = ", ".join(f"{t:g} N.m: {100 * d:.3f}" for t, d in dips.items())
+    return _finding(f"F3-{mode}{suffix}", "6a, 8",
+                    "efficiency dips near the mesh resonance at 50 and 100 N.m; the dip fades at "
+                    "200 and 300 N.m", f"dip below the trend [%-points] {measure}", ok,
+                    f"{n_res:.0f} rpm (mode {mode[1]})"
+                    + "".join(f", {k} = {v:g}" for k, v in where.items())), dips
+
+
+def jump_finding(cont, torque, mode, pts, gear_set=1):
+    n_res = resonances(pts, gear_set).get(mode)
+    j = jump(cont, gear_set, torque, n_res) if n_res else None
+    text = ("jump phenomenon: two DTE branches near resonance, DTE minimum below the half "
+            "backlash (tooth separation)")
+    if j is None:
+        return _finding(f"F4-{mode}-{torque:g}", "9", text, "no data", None), None
+    two = j["speeds_two_branches"]
+    band = f"{min(two):g}-{max(two):g} rpm" if two else "none"
+    ok = bool(two) and j["min_DTE_min_minus_b_um"] < 0
+    return _finding(f"F4-{mode}-{torque:g}", "9", text,
+                    f"two branches: {band} (largest up/down gap {j['max_branch_gap_um']:.1f} um);"
+                    f" min(DTE) - b = {j['min_DTE_min_minus_b_um']:.1f} um; contact lost up to "
+                    f"{100 * j['max_contact_loss']:.0f} % of the time", ok,
+                    f"{torque:g} N.m near {n_res:.0f} rpm (mode {mode[1]})"), j
+
+
+def away_from_resonance(speeds, res, margin=150.0):
+    s = np.asarray(speeds, float)
+    return np.all([np.abs(s - n) > margin for n in res.values()], axis=0)
+
+
+def gear_sets(pts, torque=100.0):
+    e2 = curve(pts, gear_set=2, lubricant=1, lubricant_file="", T_s=torque)
+    e3 = curve(pts, gear_set=3, lubricant=1, lubricant_file="", T_s=torque)
+    d = (e2 - e3).dropna()
+    text = "gear set 2 more efficient than gear set 3 away from resonance"
+    if d.empty:
+        return _finding("F5", "11a", text, "no data", None)
+    away = away_from_resonance(d.index, resonances(pts, 2)) & away_from_resonance(
+        d.index, resonances(pts, 3))
+    da = d[away]
+    if da.empty:
+        return _finding("F5", "11a", text, "no speeds away from resonance", None)
+    return _finding("F5", "11a", text,
+                    f"eta(set 2) - eta(set 3) = {100 * da.min():.3f} to {100 * da.max():.3f} "
+                    f"%-points at {len(da)} speeds away from resonance (all speeds: "
+                    f"{100 * d.min():.3f} to {100 * d.max():.3f})", bool((da > 0).all()),
+                    f"{torque:g} N.m")
+
+
+def gear_set_dte(pts, torque=100.0, band=(1000.0, 2000.0)):
+    """Fig. 11b: between 1000 and 2000 rpm gear set 2 has the larger DTE amplitudes."""
+    p2 = curve(pts, "DTE_pp_um", gear_set=2, lubricant=1, lubricant_file="", T_s=torque)
+    p3 = curve(pts, "DTE_pp_um", gear_set=3, lubricant=1, lubricant_file="", T_s=torque)
+    d = pd.DataFrame({"2": p2, "3": p3}).dropna()
+    d = d[(d.index >= band[0]) & (d.index <= band[1])]
+    text = "gear set 2 has large DTE amplitudes (resonance) at 1000-2000 rpm, set 3 smaller"
+    if d.empty:
+        return _finding("F8", "11b", text, "no data", None)
+    share = float((d["2"] > d["3"]).mean())
+    return _finding("F8", "11b", text,
+                    f"largest DTE p-p in {band[0]:g}-{band[1]:g} rpm: set 2 {d['2'].max():.1f} um "
+                    f"at {d['2'].idxmax():g} rpm, set 3 {d['3'].max():.1f} um at "
+                    f"{d['3'].idxmax():g} rpm; set 2 larger at {100 * share:.0f} % of "
+                    f"{len(d)} speeds", bool(d["2"].max() > d["3"].max() and share > 0.5),
+                    f"{torque:g} N.m")
+
+
+def regime_finding(pts, trace_dir, speed=1000.0):
+    """Fig. 5 (diagnostic): the highly loaded points of the cycle lie in hard EHL (PE)."""
+    from hypoid import regime, results
+
+    sel = select(pts, gear_set=1, lubricant=1, lubricant_file="", speed_rpm=speed)
+    text = "most highly loaded points of the cycle are in the piezoviscous-elastic regime"
+    if "trace" not in sel or trace_dir is None:
+        return None
+    parts = []
+    share_pe = []
+    for row in sel[sel["trace"].fillna("").astype(str) != ""].itertuples():
+        tr = results.read_trace(trace_dir, row.point_key)
+        if tr is None:
+            continue
+        s = regime.pair_samples(tr)
+        cls = regime.classify(s["g_V"], s["g_E"], s["alpha_r"])
+        high = s["W"] > 0.5 * s["W"].max()
+        counts = {r: float(np.mean(cls[high] == i)) for i, r in enumerate(regime.REGIMES)}
+        share_pe.append(counts["PE"])
+        parts.append(f"{row.T_s:g} N.m: " + ", ".join(f"{r} {100 * v:.0f} %"
+                                                      for r, v in counts.items() if v > 0))
+    if not parts:
+        return None
+    return _finding("F7", "5", text, "pairs above half the peak load: " + "; ".join(parts)
+                    + " (substitute Hamrock-Dowson map, physics.md §7; diagnostic)",
+                    None, f"{speed:g} rpm")
+
+
+def contact_loss_at(pts, speed, torque=100.0, gear_set=1):
+    sel = select(pts, gear_set=gear_set, lubricant=1, lubricant_file="", T_s=torque,
+                 speed_rpm=speed)
+    return None if sel.empty else sel.iloc[0]
+
+
+def resonance_load(pts, near, away=5000.0, torque=100.0, fid="F6"):
+    """Fig. 10: near resonance, contact is lost part of the cycle, the mean load while in
+    contact and the mean friction coefficient are higher than away from resonance."""
+    a, b = contact_loss_at(pts, near, torque), contact_loss_at(pts, away, torque)
+    text = ("near resonance the teeth separate during the cycle (zero friction), and the mean "
+            "contact load and friction coefficient are higher than away from resonance")
+    if a is None or b is None:
+        return _finding(fid, "10", text, "no data", None, f"{near:g} vs {away:g} rpm")
+    ok = bool(a["contact_loss_fraction"] > 0 and a["W_t_mean_contact_N"] > b["W_t_mean_contact_N"]
+              and a["mu_mean"] > b["mu_mean"])
+    return _finding(fid, "10", text,
+                    f"contact lost {100 * a['contact_loss_fraction']:.0f} % vs "
+                    f"{100 * b['contact_loss_fraction']:.0f} % of the time; mean load in contact "
+                    f"{a['W_t_mean_contact_N']:.0f} vs {b['W_t_mean_contact_N']:.0f} N; mean mu "
+                    f"{a['mu_mean']:.4f} vs {b['mu_mean']:.4f}", ok,
+                    f"{torque:g} N.m, {near:g} vs {away:g} rpm")
+
+
+def all_findings(pts, cont, trace_dir=None):
+    """Every finding the tables allow, as a DataFrame (one row each)."""
+    pts, cont = prepare(pts), prepare(cont)
+    rows = [lubricant_ranking(pts), swapped_alpha(pts)]
+    for mode in ("f2", "f3"):
+        f, _ = resonance_dips(pts, mode)
+        if f:
+            rows.append(f)
+    for e0 in calibration_probes(pts):
+        for mode in ("f2", "f3"):
+            f, _ = resonance_dips(pts, mode, suffix=f"-e0x{e0:g}", e_0_scale=e0)
+            if f:
+                rows.append(f)
+    if not cont.empty:
+        for t in sorted(select(cont, gear_set=1)["T_s"].unique()):
+            for mode in ("f2", "f3"):
+                rows.append(jump_finding(cont, t, mode, pts)[0])
+    rows.append(gear_sets(pts))
+    rows.append(gear_set_dte(pts))
+    res = resonances(pts, 1)
+    for i, (mode, n) in enumerate(sorted(res.items())):
+        near = _nearest_speed(pts, n)
+        if near is not None:
+            rows.append(resonance_load(pts, near, fid=f"F6-{mode}"))
+    rows.append(regime_finding(pts, trace_dir))
+    return pd.DataFrame([r for r in rows if r])
+
+
+def calibration_probes(pts):
+    """The e_0_scale values other than 1 in a table (the full study's calibration probe)."""
+    if "e_0_scale" not in pts:
+        return []
+    return sorted(v for v in pts["e_0_scale"].dropna().unique() if v != 1.0)
+
+
+def _nearest_speed(pts, n):
+    s = curve(pts, gear_set=1, lubricant=1, lubricant_file="", T_s=100.0)
+    if s.empty:
+        return None
+    return float(s.index[np.argmin(np.abs(s.index - n))])

@@ -1,0 +1,163 @@
+"""Running tasks (operating points, continuation sweeps) on dask.distributed: a local cluster of
+processes (one thread each) by default or any scheduler address, one FMU instance per worker
+process reused through fmi2Reset, a tqdm progress bar with ETA, and a callback per result so the
+caller can write it at once. `workers=0` runs everything in this process (tests, debugging).
+
+The FMU travels to the workers as bytes (scattered once), so remote workers need only the
+`hypoid` package and its pinned dependencies installed, not the repository."""
+
+import atexit
+import contextlib
+import hashlib
+import logging
+import os
+import pathlib
+import shutil
+import tempfile
+import threading
+import time
+import traceback
+import zipfile
+
+from tqdm import tqdm
+
+_INSTANCES = {}  # (fmu sha, thread) -> Instance, per worker process
+_LOCK = threading.Lock()
+
+
+class FmuRef:
+    """The FMU's content hash and bytes (the bytes may be a dask future after scatter)."""
+
+    def __init__(self, path):
+        self.path = str(path)
+        self.data = pathlib.Path(path).read_bytes()
+        self.sha = hashlib.sha256(self.data).hexdigest()
+
+
+# ---------------------------------------------------------------------------- worker side
+def _unzip_dir(sha, data):
+    """The FMU unpacked once per machine in <tmp>/hypoid-fmu/<sha> (atomic rename)."""
+    root = pathlib.Path(tempfile.gettempdir()) / "hypoid-fmu"
+    target = root / sha[:24]
+    if (target / "modelDescription.xml").exists():
+        return target
+    root.mkdir(parents=True, exist_ok=True)
+    tmp = pathlib.Path(tempfile.mkdtemp(dir=root, prefix=".unzip-"))
+    fmu = tmp / "model.fmu"
+    fmu.write_bytes(data)
+    with zipfile.ZipFile(fmu) as z:
+        z.extractall(tmp / "x")
+    try:
+        os.rename(tmp / "x", target)
+    except OSError:  # another process won the race
+        pass
+    shutil.rmtree(tmp, ignore_errors=True)
+    return target
+
+
+def instance_for(sha, data):
+    """This process's (and thread's) FMU instance, created on first use."""
+    from hypoid.instance import Instance
+
+    key = (sha, threading.get_ident())
+    with _LOCK:
+        inst = _INSTANCES.get(key)
+    if inst is None:
+        d = _unzip_dir(sha, data)
+        inst = Instance(d, unzip_dir=str(d), name=f"worker-{os.getpid()}")
+        with _LOCK:
+            _INSTANCES[key] = inst
+    return inst
+
+
+def drop_instance(sha):
+    """Frees this thread's instance (after an error its state is not trusted)."""
+    with _LOCK:
+        inst = _INSTANCES.pop((sha, threading.get_ident()), None)
+    if inst is not None:
+        with contextlib.suppress(Exception):
+            inst.close()
+
+
+@atexit.register
+def _close_all():
+    for key in list(_INSTANCES):
+        with contextlib.suppress(Exception):
+            _INSTANCES.pop(key).close()
+
+
+def guarded(sha, data, fn, *args):
+    """Runs fn(instance, *args); failures come back as {'status': 'error', ...}."""
+    from hypoid.instance import FmuError
+    from hypoid.steady import PointTimeout
+
+    t0 = time.process_time()
+    try:
+        return fn(instance_for(sha, data), *args)
+    except PointTimeout as e:
+        drop_instance(sha)
+        return {"status": "timeout", "message": str(e), "cpu_s": time.process_time() - t0}
+    except FmuError as e:
+        drop_instance(sha)
+        return {"status": "error", "message": str(e), "cpu_s": time.process_time() - t0}
+    except Exception as e:  # noqa: BLE001 - report, do not kill the whole study
+        drop_instance(sha)
+        return {"status": "error", "message": f"{type(e).__name__}: {e}",
+                "traceback": traceback.format_exc(limit=5), "cpu_s": time.process_time() - t0}
+
+
+# ---------------------------------------------------------------------------- client side
+@contextlib.contextmanager
+def executor(scheduler=None, workers=2):
+    """A dask Client (local cluster or `scheduler`), or None for in-process runs."""
+    if scheduler is None and workers == 0:
+        yield None
+        return
+    from dask.distributed import Client, LocalCluster
+
+    if scheduler:
+        client = Client(scheduler)
+        try:
+            yield client
+        finally:
+            client.close()
+        return
+    cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                           dashboard_address=None, silence_logs=logging.ERROR)
+    client = Client(cluster)
+    try:
+        yield client
+    finally:
+        client.close()
+        cluster.close()
+
+
+def run(tasks, fmu, on_result, client=None, desc="points"):
+    """tasks: [(key, fn, args)]; fn(instance, *args) runs on a worker; on_result(key, result)
+    runs here as each finishes. Returns the number of tasks run."""
+    if not tasks:
+        return 0
+    bar = tqdm(total=len(tasks), desc=desc, unit="task", smoothing=0.1, dynamic_ncols=True)
+    try:
+        if client is None:
+            for key, fn, args in tasks:
+                on_result(key, guarded(fmu.sha, fmu.data, fn, *args))
+                bar.update()
+            return len(tasks)
+        from dask.distributed import as_completed
+
+        data = client.scatter(fmu.data, broadcast=True, hash=True)
+        futures = {}
+        for key, fn, args in tasks:
+            f = client.submit(guarded, fmu.sha, data, fn, *args, pure=False)
+            futures[f] = key
+        try:
+            for f in as_completed(futures):
+                on_result(futures[f], f.result())
+                bar.update()
+        except BaseException:
+            client.cancel(list(futures))
+            raise
+        return len(tasks)
+    finally:
+        bar.close()

@@ -1,0 +1,190 @@
+"""`hypoid study`: the paper's studies (Paouris et al. 2016, Figs. 5-11) on the FMU: steady-state
+grids, continuation sweeps through the resonances, tables, plots and a report in --out.
+
+    hypoid study default --out results     # a few minutes on 2 cores (./run.sh runs this)
+    hypoid study full --out results-full   # the paper-size grid plus sensitivity runs
+    hypoid study ci --out /tmp/ci          # a seconds-long smoke version
+
+Options: --scheduler ADDRESS (a dask.distributed scheduler; default a local cluster of
+--workers processes, 2), --fmu PATH. A re-run into the same --out resumes.
+"""
+
+import argparse
+import json
+import pathlib
+import sys
+import time
+from dataclasses import dataclass, field
+
+from hypoid import parallel, steady, sweep
+from hypoid.instance import SPEED_KEY
+
+SWAPPED_NAME = "OS265963 with alpha* of OS265962"
+SWAPPED_FILE = "OS265963-alpha-OS265962.txt"
+
+
+def _rng(a, b, s):
+    return list(range(a, b + 1, s))
+
+
+@dataclass
+class Spec:
+    """What a study runs. Speeds in rpm (pinion), torques in N.m."""
+
+    speeds: list  # gear set 1 grids (Figs. 6-8)
+    torques: list  # Fig. 8
+    set_speeds: list  # gear sets 2 and 3 (Fig. 11)
+    sweep_torques: list  # continuation (Fig. 9)
+    sweep_speeds: list
+    trace_points: list  # (T_s, speed) of gear set 1, OS265962 whose signals are kept
+    sweep_sets: list = field(default_factory=lambda: [1])
+    extra: list = field(default_factory=list)  # (label, base params, {name: values}) grids
+    settings: steady.Settings = field(default_factory=steady.Settings)
+    ramp_time: float = 0.1
+
+
+SPECS = {
+    "ci": Spec(speeds=[1000, 1200, 2000, 3000], torques=[50, 300], set_speeds=[1000, 3000],
+               sweep_torques=[50], sweep_speeds=[1100, 1150, 1200, 1250],
+               trace_points=[(50, 1000), (50, 1200)]),
+    "default": Spec(
+        speeds=[800, 1000, 1100, 1150, 1200, 1250, 1300, 1400, 1600, 1800, 1900, 2000, 2100,
+                2200, 2500, 3000, 3500, 4000, 4500, 5000],
+        torques=[50, 100, 200, 300],
+        set_speeds=_rng(800, 2600, 50) + [3000, 3500, 4000, 4500, 5000],
+        sweep_torques=[50, 100],
+        sweep_speeds=_rng(1000, 1400, 25) + [1500, 1600, 1700] + _rng(1800, 2200, 50),
+        trace_points=[(50, 1000), (300, 1000), (100, 1200), (100, 2000), (100, 5000)]),
+    "full": Spec(
+        speeds=_rng(500, 5000, 50),
+        torques=[50, 100, 200, 300],
+        set_speeds=_rng(500, 5000, 50),
+        sweep_torques=[50, 100, 200, 300],
+        sweep_speeds=_rng(900, 2400, 20),
+        trace_points=[(50, 1000), (300, 1000), (100, 1200), (100, 2000), (100, 5000),
+                      (50, 1200), (50, 2000)],
+        extra=[("bath 80 degC", {"T_bath": 353.15}, {SPEED_KEY: _rng(500, 5000, 250)}),
+               ("isothermal EHL", {"friction_model": "ehl_isothermal"},
+                {SPEED_KEY: _rng(500, 5000, 250)}),
+               ("mean mesh (no backlash)", {"mesh_model": "mean"},
+                {SPEED_KEY: _rng(500, 5000, 250)}),
+               ("OS265963, k_f 0.80", {"lubricant": 2, "k_f": 0.80},
+                {SPEED_KEY: _rng(500, 5000, 250)}),
+               ("Roelands Z exact", {"roelands_z": "exact"}, {SPEED_KEY: _rng(500, 5000, 250)}),
+               ("e_0 x3 (calibration probe)", {"e_0_scale": 3.0},
+                {"T_s": [50, 100, 200, 300], SPEED_KEY: _rng(800, 2600, 50) + [3000, 4000, 5000]}),
+               ]),
+}
+
+
+def swapped_lubricant(out_dir):
+    """OS265963 with OS265962's alpha* data, written with the lubricant tool; absolute path."""
+    from hypoid import lubricant
+
+    path = (pathlib.Path(out_dir) / "lubricants" / SWAPPED_FILE).resolve()
+    path.parent.mkdir(parents=True, exist_ok=True)
+    data = dict(lubricant.BUILTIN["OS265963"])
+    data["alpha_star"] = lubricant.BUILTIN["OS265962"]["alpha_star"]
+    text = lubricant.render(lubricant.build(name=SWAPPED_NAME, **data), [
+        "Study variant for paper Fig. 7: OS265963 with the pressure-viscosity (alpha*) data of",
+        "OS265962; everything else is OS265963's."])
+    if not path.exists() or path.read_text() != text:
+        path.write_text(text)
+    return str(path)
+
+
+def points_of(spec, swapped_file):
+    """All steady points of a study (duplicates across figures are fine: keys dedupe them)."""
+    g1 = {"gear_set": 1, "lubricant": 1}
+    pts = sweep.grid(g1, {"T_s": spec.torques, SPEED_KEY: spec.speeds})  # Fig. 8
+    pts += sweep.grid({**g1, "lubricant": 2, "T_s": 100}, {SPEED_KEY: spec.speeds})  # Fig. 6a
+    pts += sweep.grid({**g1, "lubricant_file": swapped_file, "T_s": 100},
+                      {SPEED_KEY: spec.speeds})  # Fig. 7
+    pts += sweep.grid({"lubricant": 1, "T_s": 100},
+                      {"gear_set": [2, 3], SPEED_KEY: spec.set_speeds})  # Fig. 11
+    for _, base, vary in spec.extra:
+        pts += sweep.grid({**g1, "T_s": 100, **base}, vary)
+    if 100 not in spec.torques:  # Figs. 6, 7 compare with OS265962 at 100 N.m
+        pts += sweep.grid({**g1, "T_s": 100}, {SPEED_KEY: spec.speeds})
+    for t, n in spec.trace_points:
+        pts.append({**g1, "T_s": t, SPEED_KEY: n})
+    return pts
+
+
+def unique(points):
+    from hypoid import results
+
+    seen = {}
+    for p in points:
+        seen.setdefault(results.canonical(p), p)
+    return list(seen.values())
+
+
+def run(name, out, fmu_path, scheduler=None, workers=2):
+    """Runs a study; returns (points, continuation, info)."""
+    from fmpy import read_model_description
+
+    spec = SPECS[name]
+    out = pathlib.Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    md = read_model_description(fmu_path)
+    fmu = parallel.FmuRef(fmu_path)
+    swapped = swapped_lubricant(out)
+    extra_cols = sorted({k for _, base, _ in spec.extra for k in base})
+    points = unique(sweep.complete(md, points_of(spec, swapped), extra_cols))
+    traced = sweep.complete(md, [{"gear_set": 1, "lubricant": 1, "T_s": t, SPEED_KEY: n}
+                                 for t, n in spec.trace_points], extra_cols)
+    sweeps = [({k: v for k, v in p.items() if k != SPEED_KEY}, spec.sweep_speeds)
+              for p in sweep.complete(md, [{"gear_set": s, "lubricant": 1, "T_s": t}
+                                           for s in spec.sweep_sets
+                                           for t in spec.sweep_torques], extra_cols)]
+    t0 = time.time()
+    with parallel.executor(scheduler, workers) as client:
+        t1 = time.time()
+        # the sweeps are long single tasks: submitted first, they overlap with the points
+        cont, pts = sweep.execute([sweep.SweepsPlan(sweeps, out, fmu, spec.settings,
+                                                    spec.ramp_time),
+                                   sweep.PointsPlan(points, out, fmu, spec.settings, traced)],
+                                  fmu, client, desc=f"study {name}")
+    wall = time.time() - t0
+    info = {"study": name, "fmu": str(fmu_path), "fmu_sha256": fmu.sha,
+            "scheduler": scheduler or f"local cluster, {workers} workers x 1 thread"
+            if workers else "in-process", "cluster_start_s": t1 - t0, "wall_s": wall,
+            "n_points": len(pts), "n_sweeps": len(sweeps), "n_sweep_rows": len(cont),
+            "settings": spec.settings.as_dict(), "ramp_time_s": spec.ramp_time,
+            "swapped_lubricant_file": swapped,
+            "extra": [(label, base) for label, base, _ in spec.extra],
+            "finished": time.strftime("%Y-%m-%d %H:%M:%S")}
+    return pts, cont, info
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(prog="hypoid study", description=__doc__.splitlines()[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter,
+                                 epilog="\n".join(__doc__.splitlines()[1:]))
+    ap.add_argument("name", choices=sorted(SPECS), nargs="?", default="default")
+    ap.add_argument("--out", default="results")
+    ap.add_argument("--fmu", default="build/HypoidGearPair.fmu")
+    ap.add_argument("--scheduler", help="dask.distributed scheduler address")
+    ap.add_argument("--workers", type=int, default=2, help="local worker processes; 0 = serial")
+    ap.add_argument("--no-report", action="store_true", help="tables only, no plots or report")
+    args = ap.parse_args(argv)
+    if not pathlib.Path(args.fmu).exists():
+        print(f"hypoid study: {args.fmu} not found (build it with scripts/setup.sh)",
+              file=sys.stderr)
+        return 2
+    pts, cont, info = run(args.name, args.out, args.fmu, args.scheduler, args.workers)
+    out = pathlib.Path(args.out)
+    cpu = float(pts["cpu_s"].sum()) + (float(cont["cpu_s"].sum()) if len(cont) else 0.0)
+    info["cpu_s_total"] = cpu
+    (out / "study.json").write_text(json.dumps(info, indent=2) + "\n")
+    if not args.no_report:
+        from hypoid import report
+
+        path = report.write(out, pts, cont, info)
+        print(f"hypoid study: report {path}")
+    bad = int((pts["status"] != "ok").sum()) + (int((cont["status"] != "ok").sum())
+                                                if len(cont) else 0)
+    print(f"hypoid study {args.name}: {len(pts)} points, {len(cont)} continuation rows, "
+          f"{info['wall_s']:.0f} s wall, {cpu:.0f} s CPU, {bad} failed -> {out}")
+    return 1 if bad else 0

@@ -1,0 +1,176 @@
+"""The study machinery (hypoid.steady, .continuation, .sweep, .parallel, .results): instance
+reuse through fmi2Reset, steady-state detection, window sampling, resume after an interruption,
+the dask path, error rows, and the swapped-alpha* lubricant file."""
+
+import copy
+import math
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from hypoid import continuation, lubricant, parallel, results, steady, study, sweep
+from hypoid.instance import Instance, normalize
+
+QUICK = steady.Settings(window_cycles=10, min_settle_cycles=10, max_settle_time=0.05)
+OUTS = ("eta_rms", "eta_mean", "DTE_pp_um", "DTE_min_um", "W_t_mean_N", "mu_mean", "h_c_mean_um")
+
+
+@pytest.fixture(scope="module")
+def inst(fmu_path):
+    i = Instance(fmu_path)
+    yield i
+    i.close()
+
+
+@pytest.fixture(scope="module")
+def md(model_description):
+    return model_description
+
+
+# ---------------------------------------------------------------------------- grids
+def test_parse_values_and_grid():
+    assert sweep.parse_values("1000:2000:250") == [1000, 1250, 1500, 1750, 2000]
+    assert sweep.parse_values("50,100") == [50, 100]
+    assert sweep.parse_values("ehl_thermal,coulomb") == ["ehl_thermal", "coulomb"]
+    pts = sweep.grid({"gear_set": 2}, {"T_s": [50, 100], "speed_rpm": [1000, 2000, 3000]})
+    assert len(pts) == 6 and all(p["gear_set"] == 2 for p in pts)
+
+
+def test_points_are_normalised_so_equal_points_get_equal_keys(md):
+    a = sweep.complete(md, [{"friction_model": 4, "T_s": 100, "speed_rpm": 2000}])[0]
+    b = sweep.complete(md, [{"friction_model": "ehl_thermal", "T_s": 100.0}])[0]
+    assert a == b and results.point_key(a) == results.point_key(b)
+    assert a["lubricant_file"] == "" and a["T_bath"] == pytest.approx(313.15)
+    with pytest.raises(ValueError, match="friction_model"):
+        normalize(md, {"friction_model": "magic"})
+
+
+# ---------------------------------------------------------------------------- one instance
+def test_reset_between_points_reproduces_a_fresh_instance(inst, fmu_path, md):
+    other = sweep.complete(md, [{"gear_set": 2, "lubricant": 2, "T_s": 300, "speed_rpm": 3000,
+                                 "friction_model": "coulomb", "T_bath": 353.15}])[0]
+    point = sweep.complete(md, [{"T_s": 100, "speed_rpm": 2000}])[0]
+    steady.run_point(inst, other, QUICK)
+    reused, _ = steady.run_point(inst, point, QUICK)
+    fresh_inst = Instance(fmu_path)
+    try:
+        fresh, _ = steady.run_point(fresh_inst, point, QUICK)
+    finally:
+        fresh_inst.close()
+    for k in OUTS:
+        assert reused[k] == fresh[k], k
+
+
+def test_window_is_sampled_32_times_per_mesh_cycle(inst):
+    row, win = steady.run_point(inst, {"T_s": 100.0, "speed_rpm": 3000.0}, QUICK, trace=True)
+    n = QUICK.window_cycles * QUICK.samples_per_cycle
+    assert len(win["eta"]) == n
+    period = 60.0 / (3000.0 * row["N_p"])
+    assert win["time"][-1] - win["time"][0] == pytest.approx((n - 1) * period / 32, rel=1e-9)
+    assert (win["theta"][-1] - win["theta"][0]) / (2 * math.pi) == pytest.approx(
+        (n - 1) / 32, rel=2e-3)  # the mesh angle advances one cycle per 32 samples
+    assert row["eta_rms"] == pytest.approx(np.sqrt(np.mean(win["eta"] ** 2)))
+    assert 0.98 < row["eta_rms"] < 1.0 and row["contact_loss_fraction"] == 0.0
+
+
+def test_steady_state_detection_converges_or_reports_the_time_limit(inst):
+    row, _ = steady.run_point(inst, {"T_s": 100.0, "speed_rpm": 2500.0},
+                              steady.Settings(window_cycles=10))
+    assert row["converged"] and row["settle_d_eta"] <= 1e-5
+    strict = steady.Settings(window_cycles=10, tol_eta=0.0, tol_dte_rel=0.0, tol_dte_abs=0.0,
+                             max_settle_time=0.03)
+    row, _ = steady.run_point(inst, {"T_s": 100.0, "speed_rpm": 2500.0}, strict)
+    assert not row["converged"]
+    assert 0.03 <= row["settle_time_s"] < 0.03 + 10 * 60 / (2500 * 13) + 1e-9
+
+
+def test_continuation_visits_speeds_up_then_down(inst):
+    rows = continuation.run_sweep(inst, {"T_s": 100.0}, [3000, 2000, 2500],
+                                  steady.Settings(window_cycles=10), ramp_time=0.05)
+    assert [(r["speed_rpm"], r["branch"]) for r in rows] == [
+        (2000, "up"), (2500, "up"), (3000, "up"), (3000, "down"), (2500, "down"),
+        (2000, "down")]
+    for r in rows:  # the governor has followed the ramps
+        assert r["speed_mean_rpm"] == pytest.approx(r["speed_rpm"], rel=2e-3)
+
+
+# ---------------------------------------------------------------------------- runs, resume
+def test_interrupted_run_keeps_its_results_and_resumes(tmp_path, fmu_path, md, monkeypatch):
+    pts = sweep.complete(md, sweep.grid({"T_s": 100}, {"speed_rpm": [2000, 3000, 4000]}))
+    fmu = parallel.FmuRef(fmu_path)
+    calls = []
+    real = sweep.point_task
+
+    def flaky(inst, params, settings, trace):
+        calls.append(params["speed_rpm"])
+        if len(calls) == 2:
+            raise KeyboardInterrupt  # the user stops the run during the second point
+        return real(inst, params, settings, trace)
+
+    monkeypatch.setattr(sweep, "point_task", flaky)
+    with pytest.raises(KeyboardInterrupt):
+        sweep.run_points(pts, tmp_path, fmu, None, QUICK)
+    log = results.Table(tmp_path / "log", "points")
+    assert len(log.done_keys()) == 1  # the first result was written before the interruption
+    monkeypatch.setattr(sweep, "point_task", real)
+    plan = sweep.PointsPlan(pts, tmp_path, fmu, QUICK)
+    assert len(plan.tasks) == 2  # a re-run does only the missing points
+    df = sweep.execute([plan], fmu)[0]
+    assert len(df) == 3 and (df["status"] == "ok").all()
+    assert len(sweep.PointsPlan(pts, tmp_path, fmu, QUICK).tasks) == 0
+    assert pd.read_parquet(tmp_path / "points.parquet").shape[0] == 3
+    rebuilt = copy.copy(fmu)
+    rebuilt.sha = "0" * 64  # another FMU build: nothing is reused
+    assert len(sweep.PointsPlan(pts, tmp_path, rebuilt, QUICK).tasks) == 3
+
+
+def test_failed_point_is_a_row_and_the_next_point_still_runs(tmp_path, fmu_path, md):
+    pts = sweep.complete(md, [{"T_s": 100, "speed_rpm": 2000,
+                               "lubricant_file": str(tmp_path / "missing.txt")},
+                              {"T_s": 100, "speed_rpm": 2500}])
+    fmu = parallel.FmuRef(fmu_path)
+    df = sweep.run_points(pts, tmp_path, fmu, None, QUICK)
+    bad = df[df["lubricant_file"] != ""].iloc[0]
+    assert bad["status"] == "error" and "missing.txt" in bad["message"]
+    assert df[df["lubricant_file"] == ""].iloc[0]["status"] == "ok"
+    assert len(sweep.PointsPlan(pts, tmp_path, fmu, QUICK).tasks) == 1  # failures are retried
+
+
+def test_dask_local_cluster_matches_the_serial_run(tmp_path, fmu_path, md):
+    pts = sweep.complete(md, sweep.grid({"T_s": 50}, {"speed_rpm": [1500, 2500, 3500, 4500]}))
+    fmu = parallel.FmuRef(fmu_path)
+    serial = sweep.run_points(pts, tmp_path / "serial", fmu, None, QUICK)
+    with parallel.executor(workers=2) as client:
+        dist = sweep.run_points(pts, tmp_path / "dask", fmu, client, QUICK)
+    assert (dist["status"] == "ok").all()
+    assert dist["worker_pid"].nunique() <= 2  # one reused instance per worker process
+    for k in OUTS:
+        np.testing.assert_array_equal(dist[k].to_numpy(), serial[k].to_numpy(), err_msg=k)
+
+
+def test_table_widens_its_header_for_new_columns(tmp_path):
+    t = results.Table(tmp_path, "x")
+    t.append([{"point_key": "a", "status": "ok", "v": 1.0}])
+    t.append([{"point_key": "b", "status": "error", "message": "boom"}])
+    df = t.read()
+    assert list(df.columns) == ["point_key", "status", "v", "message"]
+    assert df["message"].iloc[1] == "boom" and math.isnan(df["v"].iloc[1])
+    assert t.done_keys() == {"a"}
+
+
+# ---------------------------------------------------------------------------- lubricant file
+def test_swapped_alpha_lubricant_file(tmp_path):
+    path = study.swapped_lubricant(tmp_path)
+    values = {}
+    for line in open(path):
+        words = line.split("#")[0].split()
+        if len(words) == 2:
+            values[words[0]] = words[1]
+    for i, a in enumerate(lubricant.BUILTIN["OS265962"]["alpha_star"], 1):
+        assert float(values[f"alpha_star_{i}"]) == pytest.approx(a * 1e-9)
+    assert float(values["hn_alpha"]) == lubricant.BUILTIN["OS265963"]["hn_alpha"]
+    assert float(values["hn_lambda"]) == lubricant.BUILTIN["OS265963"]["hn_lambda"]
+    builtin = lubricant.render(lubricant.build(name="OS265963", **lubricant.BUILTIN["OS265963"]),
+                               lubricant.BUILTIN_NOTES["OS265963"])
+    assert builtin == (sweep.pathlib.Path(lubricant.builtin_dir()) / "OS265963.txt").read_text()
