@@ -1,6 +1,7 @@
 /* Efficiency maps: reading and trilinear interpolation (see effmap.h). */
 #include "model/effmap.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -128,6 +129,13 @@ void hg_effmap_free(hg_effmap *map)
     free(map->M_T);
     free(map->M_K);
     map->eta = map->M_w = map->M_T = map->M_K = NULL;
+}
+
+int hg_effmap_inside(const hg_effmap *map, double w, double T, double K)
+{
+    w = fabs(w), T = fabs(T);
+    return w >= map->w[0] && w <= map->w[map->n_w - 1] && T >= map->T[0] &&
+           T <= map->T[map->n_T - 1] && K >= map->K[0] && K <= map->K[map->n_K - 1];
 }
 
 double hg_effmap_eta(const hg_effmap *map, int direction, double w, double T, double K)

@@ -23,6 +23,9 @@ typedef struct {
 int hg_effmap_load(const char *path, hg_effmap *map, char *err, size_t errlen);
 void hg_effmap_free(hg_effmap *map);
 
+/* 1 when (|w|, |T|, K) lies within the table's ranges. */
+int hg_effmap_inside(const hg_effmap *map, double w, double T, double K);
+
 /* Efficiency at |pinion speed| w, |pinion torque| T, bath temperature K in a direction. */
 double hg_effmap_eta(const hg_effmap *map, int direction, double w, double T, double K);
 

@@ -11,6 +11,7 @@
 #define WRAP_PERIODS 1024     /* wrap the pinion angle after this many load-share periods */
 #define MAX_EVENTS_PER_STEP 100000
 #define MAX_AUTO_STEP 1e-3    /* [s] */
+#define STEPS_PER_MODE 8      /* fixed steps per period of the highest natural mode, at least */
 
 void hg_model_log(hg_model *m, const char *category, const char *fmt, ...)
 {
@@ -155,11 +156,29 @@ static int inputs_changed(const hg_dyn_inputs *a, const hg_dyn_inputs *b)
     return a->T_s != b->T_s || a->T_w != b->T_w || a->T_bath != b->T_bath || a->w_set != b->w_set;
 }
 
+/* The step limit of this communication step. Variable-step solvers: the user's max_step, or
+ * automatically 1/STEPS_PER_MESH of a mesh period for the compliant meshes (physics 8.8; none for
+ * the rigid one). The fixed-step solver: steps_per_mesh_cycle per mesh period, never longer than
+ * the user's max_step nor than 1/STEPS_PER_MODE of the period of the highest natural mode, which a
+ * fixed step must resolve whatever the speed. */
+static double step_limit(const hg_model *m)
+{
+    double f_mesh = fabs(m->rt.y[HG_Y_W_P]) * m->gear.N_p / TWO_PI, h;
+    if (!m->fixed_step && (m->max_step > 0.0 || m->p.mesh == HG_MESH_MODEL_RIGID))
+        return m->max_step;
+    h = f_mesh > 0.0 ? 1.0 / (m->steps_per_mesh * f_mesh) : MAX_AUTO_STEP;
+    h = fmin(h, MAX_AUTO_STEP);
+    if (m->fixed_step) {
+        h = fmin(h, 1.0 / (STEPS_PER_MODE * m->f_max));
+        if (m->max_step > 0.0) h = fmin(h, m->max_step);
+    }
+    return h;
+}
+
 static int begin_step(hg_model *m, const hg_vars *v, const hg_dyn_inputs *du, char *err,
                       size_t errlen)
 {
     hg_runtime *rt = &m->rt;
-    double h_max = m->max_step, f_mesh;
     hg_dyn_inputs u;
     hg_model_inputs(v, &u);
     if (inputs_changed(&u, &rt->u_end) || inputs_changed(du, &rt->du)) rt->restart = 1;
@@ -167,16 +186,27 @@ static int begin_step(hg_model *m, const hg_vars *v, const hg_dyn_inputs *du, ch
     rt->du = *du;
     rt->t_u0 = rt->t;
     wrap_angle(m);
-    /* automatic: resolve the mesh cycle, unless there is no mesh dynamics and the step is free */
-    if (h_max <= 0.0 && (m->fixed_step || m->p.mesh != HG_MESH_MODEL_RIGID)) {
-        f_mesh = fabs(rt->y[HG_Y_W_P]) * m->gear.N_p / TWO_PI;
-        h_max = f_mesh > 0.0 ? 1.0 / (m->steps_per_mesh * f_mesh) : MAX_AUTO_STEP;
-        if (h_max > MAX_AUTO_STEP) h_max = MAX_AUTO_STEP;
-    }
-    if (hg_solver_set_max_step(m->solver, h_max, err, errlen)) return -1;
+    if (hg_solver_set_max_step(m->solver, step_limit(m), err, errlen)) return -1;
     if (rt->restart && hg_solver_restart(m->solver, rt->t, rt->y, err, errlen)) return -1;
     rt->restart = 0;
     return 0;
+}
+
+/* The map holds its edge values beyond its grid: say so once per run. */
+static void check_map_range(hg_model *m)
+{
+    hg_runtime *rt = &m->rt;
+    const hg_effmap *map = m->p.map;
+    double w = rt->y[HG_Y_W_P], T = rt->u_end.T_s, K = rt->u_end.T_bath;
+    if (!map || rt->map_warned || hg_effmap_inside(map, w, T, K)) return;
+    rt->map_warned = 1;
+    hg_model_log(m, "logStatusWarning",
+                 "t = %.6g s: operating point %.0f rpm, T_s = %.1f N.m, T_bath = %.1f degC lies "
+                 "outside the efficiency map (%.0f-%.0f rpm, %.0f-%.0f N.m, %.0f-%.0f degC): the "
+                 "map holds its edge values there",
+                 rt->t, fabs(w) * 30.0 / 3.141592653589793, T, K - 273.15,
+                 map->w[0] * 30.0 / 3.141592653589793, map->w[map->n_w - 1] * 30.0 / 3.141592653589793,
+                 map->T[0], map->T[map->n_T - 1], map->K[0] - 273.15, map->K[map->n_K - 1] - 273.15);
 }
 
 int hg_model_step(hg_model *m, hg_vars *v, const hg_dyn_inputs *du, double h, char *err,
@@ -205,6 +235,7 @@ int hg_model_step(hg_model *m, hg_vars *v, const hg_dyn_inputs *du, double h, ch
     }
     rt->t = t_end;
     inputs_at(rt, t_end, &rt->u_end);
+    check_map_range(m);
     hg_model_write_outputs(m, v);
     return 0;
 }

@@ -28,6 +28,7 @@ typedef struct {
     double win_eta2_0, win_efric_0;
     int windows;                   /* averaging windows completed */
     double eta_cycle, P_loss_cycle;
+    int map_warned;                /* the map level has said once that it left its grid */
 } hg_runtime;
 
 typedef struct hg_model hg_model;

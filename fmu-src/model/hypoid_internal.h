@@ -24,6 +24,7 @@ struct hg_model {
     double max_step;      /* user's max_step, 0 = automatic */
     int steps_per_mesh;   /* per mesh cycle: the fixed step (newmark) or the automatic max_step */
     int fixed_step;       /* the solver takes fixed steps (newmark) */
+    double f_max;         /* highest natural frequency of the linearised system [Hz] */
     double window_angle; /* pinion angle of one averaging window [rad] */
     hg_runtime rt;
 };

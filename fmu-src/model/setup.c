@@ -190,7 +190,8 @@ static void tolerances(hg_model *m, const hg_vars *v)
     t[HG_Y_ETA2] = 1e-9;
     m->rtol = v->rtol;
     m->fixed_step = v->solver == HG_SOLVER_NEWMARK;
-    m->max_step = m->fixed_step ? 0.0 : v->max_step;
+    m->max_step = v->max_step;
+    m->f_max = v->f_4;
     m->steps_per_mesh = m->fixed_step ? v->steps_per_mesh_cycle : STEPS_PER_MESH;
 }
 

@@ -283,7 +283,8 @@ static hg_advance_result advance(void *impl, double t_stop, double *t, double *y
     memcpy(y, s->y, (size_t)s->n * sizeof(double));
     return HG_ADVANCE_REACHED;
 failed:
-    snprintf(err, errlen, "Newmark: %s at t = %.9g s (step %g s)",
+    snprintf(err, errlen, "Newmark: %s at t = %.9g s (step %g s); use a shorter step "
+             "(steps_per_mesh_cycle, max_step) or a CVODE solver",
              taken > s->max_steps ? "too many steps" : "Newton iteration failed to converge",
              s->t, s->h);
     return HG_ADVANCE_FAILED;
