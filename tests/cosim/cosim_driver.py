@@ -1,0 +1,604 @@
+#!/usr/bin/env python3
+"""The gear FMU coupled to the vehicle FMU in a real co-simulation host (libcosim, through
+libcosimpy), in our own fmpy master with the same algorithm and in an fmu-manipulation-toolbox
+container; the scene and the energy balance.
+docs/cosimulation.md explains the coupling and the figures.
+
+    python tests/cosim/cosim_driver.py [--steps 2e-3 1e-3 5e-4 2e-4 1e-4] [--json OUT] [--plot PNG]
+
+prints, for each communication step, the energy residual of the coupled system and how far the
+libcosim run is from the fmpy run, from the fmu-manipulation-toolbox container run by fmpy, from a
+Gauss-Seidel master and from the finest step.
+
+Coupling (Jacobi, as libcosim's fixed_step_algorithm): both FMUs step over [t_n, t_n + h] with
+inputs held at the values of t_n, then outputs are transferred:
+    profile  T_s(t_n)  -> gear.T_s          (libcosim: the override manipulator)
+    vehicle  T_hs      -> gear.T_w          (half-shaft torque, positive resists)
+    gear     w_w       -> vehicle.w_w       (wheel-side flange speed)
+"""
+
+import argparse
+import ctypes
+import io
+import json
+import math
+import pathlib
+import shutil
+import sys
+import tempfile
+import time
+import xml.etree.ElementTree as ET
+import zipfile
+from dataclasses import dataclass, field
+
+import numpy as np
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+GEAR_FMU = ROOT / "build" / "HypoidGearPair.fmu"
+VEHICLE_FMU = ROOT / "build" / "LongitudinalVehicle.fmu"
+RATIO = 36.0 / 13.0  # gear set 1 (checked against the FMU's `ratio` by the test)
+RPM = math.pi / 30.0
+
+# Recorded outputs.
+GEAR_OUT = ["w_s", "w_p", "w_w", "T_w_out", "eta", "P_loss", "E_in", "E_out", "E_friction",
+            "E_damping", "E_excitation", "E_stored"]
+VEHICLE_OUT = ["T_hs", "v", "w_wheel", "P_in", "E_in", "E_kin", "E_spring", "E_road", "E_grade",
+               "E_damper"]
+
+
+@dataclass
+class Scene:
+    """A launch, a tip-out into coast (engine braking) and a tip-in, torque-driven at the pinion.
+    T_s is piecewise linear through `profile` (s, N.m) and sampled at each communication point."""
+
+    stop_time: float = 2.5
+    profile: tuple = ((0.0, 0.0), (0.3, 150.0), (1.2, 150.0), (1.3, -50.0), (1.8, -50.0),
+                      (1.9, 150.0), (2.5, 150.0))
+    w_p0: float = 100.0 * RPM
+    gear: dict = field(default_factory=dict)     # extra gear parameters (fidelity etc.)
+    vehicle: dict = field(default_factory=dict)  # extra vehicle parameters
+
+    def torque(self, t):
+        ts, vs = zip(*self.profile)
+        return float(np.interp(t, ts, vs))
+
+    def gear_start(self):
+        """Parameters and initial inputs of the gear: torque-driven at both ends, starting at rest
+        torque-wise (T_s = T_w = 0, consistent with the vehicle's untwisted half-shaft)."""
+        values = {"load_mode": 1, "w_p0": self.w_p0, "T_s": self.torque(0.0), "T_w": 0.0}
+        values.update(self.gear)
+        return values
+
+    def vehicle_start(self):
+        r_dyn = self.vehicle.get("r_dyn", 0.3)
+        # w_w: the input's start value, the gear's w_w at the start (a master that initializes
+        # without iterating the loop then starts consistently too)
+        values = {"v0": r_dyn * self.w_p0 / RATIO, "T_hs0": 0.0, "w_w": self.w_p0 / RATIO}
+        values.update(self.vehicle)
+        return values
+
+
+def step_ns(h):
+    """libcosim counts time in integer nanoseconds."""
+    ns = int(round(h * 1e9))
+    if ns <= 0 or abs(ns - h * 1e9) > 1e-6:
+        raise ValueError(f"step {h} s is not a whole number of nanoseconds")
+    return ns
+
+
+def n_steps(scene, h):
+    return int(round(scene.stop_time / h))
+
+
+# ------------------------------------------------------------------ libcosim view of the gear FMU
+
+
+def libcosim_view(src, dst):
+    """libcosim 0.11 (libcosimpy 0.0.6) ignores FMI 2.0 Enumeration variables ("Enumeration
+    variable type not supported ... will be ignored"), so load_mode could not be set. This writes a
+    copy of the FMU whose modelDescription declares those variables as Integer (same value
+    references, same start values, min/max from the enumeration); the binary is unchanged and
+    fmi2SetInteger is what sets an enumeration in FMI 2.0 anyway."""
+    src, dst = pathlib.Path(src), pathlib.Path(dst)
+    with zipfile.ZipFile(src) as zin:
+        root = ET.fromstring(zin.read("modelDescription.xml"))
+        n_items = {t.get("name"): len(t.findall("./Enumeration/Item"))
+                   for t in root.findall("./TypeDefinitions/SimpleType")}
+        for sv in root.iter("ScalarVariable"):
+            enum = sv.find("Enumeration")
+            if enum is None:
+                continue
+            attrs = {"min": "1", "max": str(n_items[enum.get("declaredType")])}
+            if enum.get("start") is not None:
+                attrs["start"] = enum.get("start")
+            sv.remove(enum)
+            ET.SubElement(sv, "Integer", attrs)
+        xml = io.BytesIO()
+        ET.ElementTree(root).write(xml, encoding="UTF-8", xml_declaration=True)
+        with zipfile.ZipFile(dst, "w", zipfile.ZIP_DEFLATED) as zout:
+            for item in zin.infolist():
+                data = xml.getvalue() if item.filename == "modelDescription.xml" \
+                    else zin.read(item.filename)
+                zout.writestr(item, data)
+    return dst
+
+
+# ------------------------------------------------------------------ results and checks
+
+
+@dataclass
+class Result:
+    host: str
+    h: float
+    t: np.ndarray         # communication points t_0 .. t_N
+    T_s: np.ndarray       # torque applied over [t_k, t_k+1] (last entry repeats)
+    gear: dict            # output name -> values at t_0 .. t_N
+    vehicle: dict
+    wall: float           # seconds
+    log: list = field(default_factory=list)  # (status, message) logged by the FMUs, when kept
+
+
+def energy_balance(r):
+    """The coupled system's energy balance over the run (J).
+
+    W_Ts = gear.E_in, the work done by T_s on the input shaft, must equal what the gear dissipated
+    and stored plus what the vehicle received through the coupling and dissipated and stored:
+      gear:    E_friction + E_damping - E_excitation + (E_stored - E_stored(0))
+      vehicle: (E_kin - E_kin(0)) + (E_spring - E_spring(0)) + E_road + E_grade + E_damper
+    The residual W_Ts - gear - vehicle is the sum of each FMU's own closure (integrator error,
+    tiny) and of the coupling error E_out(gear) - E_in(vehicle): the gear integrates the held T_w
+    against its continuous w_w, the vehicle the continuous T_hs against the held w_w."""
+    g, v = r.gear, r.vehicle
+    w_ts = g["E_in"][-1]
+    gear = g["E_friction"][-1] + g["E_damping"][-1] - g["E_excitation"][-1] \
+        + g["E_stored"][-1] - g["E_stored"][0]
+    veh = v["E_kin"][-1] - v["E_kin"][0] + v["E_spring"][-1] - v["E_spring"][0] \
+        + v["E_road"][-1] + v["E_grade"][-1] + v["E_damper"][-1]
+    gear_closure = g["E_in"][-1] - g["E_out"][-1] - g["E_friction"][-1] - g["E_damping"][-1] \
+        + g["E_excitation"][-1] - (g["E_stored"][-1] - g["E_stored"][0])
+    veh_closure = v["E_in"][-1] - veh
+    coupling = g["E_out"][-1] - v["E_in"][-1]
+    # gross energy through the interface, the natural scale of the coupling error
+    through = float(np.sum(np.abs(v["P_in"][1:])) * r.h)
+    return {"W_Ts": w_ts, "gear": gear, "vehicle": veh, "residual": w_ts - gear - veh,
+            "gear_closure": gear_closure, "vehicle_closure": veh_closure,
+            "coupling": coupling, "interface_throughput": through,
+            "relative_residual": (w_ts - gear - veh) / w_ts}
+
+
+def resample(r, h):
+    """Every k-th communication point, so a run with a finer step lines up with one at h."""
+    k = int(round(h / r.h))
+    idx = np.arange(0, len(r.t), k)
+    return {"t": r.t[idx], **{f"gear.{n}": x[idx] for n, x in r.gear.items()},
+            **{f"vehicle.{n}": x[idx] for n, x in r.vehicle.items()}}
+
+
+def difference(a, b, names=("gear.w_p", "gear.T_w_out", "gear.eta"), h=None):
+    """Largest absolute difference of each named output on the coarser of the two time grids
+    (abs), that over the output's largest magnitude in a (rel), and the RMS difference over the
+    output's RMS in a (rms_rel)."""
+    h = h or max(a.h, b.h)
+    ra, rb = resample(a, h), resample(b, h)
+    n = min(len(ra["t"]), len(rb["t"]))
+    assert np.allclose(ra["t"][:n], rb["t"][:n], atol=1e-12, rtol=0)
+    out = {}
+    for name in names:
+        x, y = ra[name][:n], rb[name][:n]
+        d = float(np.max(np.abs(x - y)))
+        out[name] = {"abs": d, "rel": d / float(np.max(np.abs(x))),
+                     "rms_rel": float(np.sqrt(np.mean((x - y) ** 2) / np.mean(x ** 2)))}
+    return out
+
+
+# ------------------------------------------------------------------ libcosim
+
+
+def libcosim_available():
+    """None when libcosimpy loads here, else why not."""
+    try:
+        from libcosimpy._internal import libcosimc
+        libcosimc()
+    except Exception as e:  # noqa: BLE001 - any failure means: not usable here
+        return f"{type(e).__name__}: {e}"
+    return None
+
+
+def run_libcosim(scene, h, gear_fmu, vehicle_fmu=VEHICLE_FMU):
+    """The scene in libcosim's fixed-step (Jacobi) master. gear_fmu must be the libcosim view
+    (libcosim_view). T_s goes in through the override manipulator before every step; a time-series
+    observer records every step including the initial state (step 0)."""
+    from libcosimpy._internal import libcosimc, wrap_function
+    from libcosimpy.CosimEnums import CosimVariableType
+    from libcosimpy.CosimExecution import CosimExecution
+    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
+    from libcosimpy.CosimManipulator import CosimManipulator
+    from libcosimpy.CosimObserver import CosimObserver
+    from libcosimpy.CosimSlave import CosimLocalSlave
+
+    log_output_level(CosimLogLevel.ERROR)
+    wall = time.perf_counter()
+    ex = CosimExecution.from_step_size(step_ns(h))
+    slaves = {}
+    idx = {}
+    for name, path in (("gear", gear_fmu), ("vehicle", vehicle_fmu)):
+        slaves[name] = CosimLocalSlave(fmu_path=str(path), instance_name=name)
+        idx[name] = ex.add_local_slave(slaves[name])
+        assert idx[name] >= 0, f"libcosim could not load {path}"
+    vr = {name: {v.name.decode(): (v.reference, v.type) for v in ex.slave_variables(i)}
+          for name, i in idx.items()}
+
+    def initial(name, values):
+        for var, value in values.items():
+            ref, typ = vr[name][var]
+            ok = ex.integer_initial_value(idx[name], ref, int(value)) if typ == 1 else \
+                ex.real_initial_value(idx[name], ref, float(value))
+            assert ok, f"libcosim: initial value {name}.{var} = {value} refused"
+
+    initial("gear", scene.gear_start())
+    initial("vehicle", scene.vehicle_start())
+    ok = ex.connect_real_variables(idx["vehicle"], vr["vehicle"]["T_hs"][0], idx["gear"],
+                                   vr["gear"]["T_w"][0])
+    ok = ok == 0 and ex.connect_real_variables(idx["gear"], vr["gear"]["w_w"][0],
+                                               idx["vehicle"], vr["vehicle"]["w_w"][0]) == 0
+    assert ok, "libcosim: connecting the FMUs failed"
+    manipulator = CosimManipulator.create_override()
+    ex.add_manipulator(manipulator)
+    n = n_steps(scene, h)
+    observer = CosimObserver.create_time_series(buffer_size=n + 1)  # the default keeps 10 000
+    ex.add_observer(observer)
+    for name, names in (("gear", GEAR_OUT), ("vehicle", VEHICLE_OUT)):
+        for var in names:
+            observer.start_time_series(idx[name], vr[name][var][0], CosimVariableType.REAL)
+
+    ns = step_ns(h)
+    t_s = np.empty(n + 1)
+    ref_ts = [vr["gear"]["T_s"][0]]
+    for k in range(n):
+        t_s[k] = scene.torque(k * ns * 1e-9)
+        manipulator.slave_real_values(idx["gear"], ref_ts, [t_s[k]])
+        if not ex.step():
+            raise RuntimeError(f"libcosim step {k} failed: {ex.status()}")
+    t_s[n] = t_s[n - 1]
+
+    # libcosimpy's time_series_real_samples drops a sample when step 0 is among them: call the C
+    # function directly.
+    get = wrap_function(lib=libcosimc(), funcname="cosim_observer_slave_get_real_samples",
+                        argtypes=[ctypes.c_void_p, ctypes.c_int, ctypes.c_uint32, ctypes.c_int64,
+                                  ctypes.c_size_t, ctypes.POINTER(ctypes.c_double),
+                                  ctypes.POINTER(ctypes.c_int64), ctypes.POINTER(ctypes.c_int64)],
+                        restype=ctypes.c_int64)
+    values = np.empty(n + 1)
+    steps = np.empty(n + 1, dtype=np.int64)
+    times = np.empty(n + 1, dtype=np.int64)
+    series = {}
+    for name, names in (("gear", GEAR_OUT), ("vehicle", VEHICLE_OUT)):
+        series[name] = {}
+        for var in names:
+            got = get(ctypes.cast(observer.ptr(), ctypes.c_void_p), idx[name], vr[name][var][0], 0,
+                      n + 1, values.ctypes.data_as(ctypes.POINTER(ctypes.c_double)),
+                      steps.ctypes.data_as(ctypes.POINTER(ctypes.c_int64)),
+                      times.ctypes.data_as(ctypes.POINTER(ctypes.c_int64)))
+            assert got == n + 1 and np.array_equal(steps, np.arange(n + 1)), \
+                f"libcosim observer: {got} samples of {name}.{var}"
+            series[name][var] = values.copy()
+    t = times * 1e-9
+    # keep the objects alive until here (their destructors free the C side)
+    del observer, manipulator, ex, slaves
+    return Result("libcosim", h, t, t_s, series["gear"], series["vehicle"],
+                  time.perf_counter() - wall)
+
+
+# ------------------------------------------------------------------ our own master with fmpy
+
+
+class _Slave:
+    def __init__(self, path, name, workdir):
+        from fmpy import extract, read_model_description
+        from fmpy.fmi2 import FMU2Slave
+        self.md = read_model_description(str(path))
+        unzipped = extract(str(path), str(pathlib.Path(workdir) / name))
+        self.var = {v.name: v for v in self.md.modelVariables}
+        self.fmu = FMU2Slave(guid=self.md.guid, unzipDirectory=unzipped,
+                             modelIdentifier=self.md.coSimulation.modelIdentifier,
+                             instanceName=name)
+        self.fmu.instantiate()
+
+    def vr(self, names):
+        return [self.var[n].valueReference for n in names]
+
+    def set_start(self, values):
+        for name, value in values.items():
+            v = self.var[name]
+            if v.type in ("Integer", "Enumeration"):
+                self.fmu.setInteger([v.valueReference], [int(value)])
+            else:
+                self.fmu.setReal([v.valueReference], [float(value)])
+
+
+def run_fmpy(scene, h, algorithm="jacobi", gear_fmu=GEAR_FMU, vehicle_fmu=VEHICLE_FMU):
+    """The scene in a fixed-step master written here with fmpy's FMU2Slave.
+
+    jacobi: libcosim's fixed_step_algorithm call for call: start values in the instantiated
+      state, fmi2SetupExperiment(start 0, no stop time), initialization mode with as many
+      set-inputs / get-outputs / transfer passes as there are FMUs, the transferred inputs set,
+      exit, get outputs, transfer; then per step
+      set the held inputs on both, step both, get outputs, transfer.
+    gauss-seidel: the gear steps first; the vehicle then steps with the gear's new w_w."""
+    if algorithm not in ("jacobi", "gauss-seidel"):
+        raise ValueError(algorithm)
+    wall = time.perf_counter()
+    workdir = tempfile.mkdtemp(prefix="cosim-fmpy-")
+    try:
+        gear = _Slave(gear_fmu, "gear", workdir)
+        veh = _Slave(vehicle_fmu, "vehicle", workdir)
+        gear.set_start(scene.gear_start())
+        veh.set_start(scene.vehicle_start())
+        vr_g_in, vr_v_in = gear.vr(["T_s", "T_w"]), veh.vr(["w_w"])
+        vr_g_out, vr_v_out = gear.vr(GEAR_OUT), veh.vr(VEHICLE_OUT)
+        i_ww, i_ths = GEAR_OUT.index("w_w"), VEHICLE_OUT.index("T_hs")
+        for s in (gear, veh):
+            s.fmu.setupExperiment(startTime=0.0)
+        for s in (gear, veh):
+            s.fmu.enterInitializationMode()
+        t_s0 = scene.torque(0.0)
+        t_w = scene.gear_start()["T_w"]
+        w_w = scene.vehicle_start().get("w_w", 0.0)
+        for _ in range(2):  # libcosim: one pass per FMU: set inputs, get outputs, transfer
+            gear.fmu.setReal(vr_g_in, [t_s0, t_w])
+            veh.fmu.setReal(vr_v_in, [w_w])
+            g_out, v_out = gear.fmu.getReal(vr_g_out), veh.fmu.getReal(vr_v_out)
+            w_w, t_w = g_out[i_ww], v_out[i_ths]
+        gear.fmu.setReal(vr_g_in, [t_s0, t_w])  # the last transfer goes in before the exit
+        veh.fmu.setReal(vr_v_in, [w_w])
+        for s in (gear, veh):
+            s.fmu.exitInitializationMode()
+        g_out, v_out = gear.fmu.getReal(vr_g_out), veh.fmu.getReal(vr_v_out)
+        w_w, t_w = g_out[i_ww], v_out[i_ths]
+
+        n = n_steps(scene, h)
+        ns = step_ns(h)
+        g_rows, v_rows = [g_out], [v_out]
+        t = np.arange(n + 1) * ns * 1e-9
+        t_s = np.empty(n + 1)
+        for k in range(n):
+            tk = float(t[k])
+            t_s[k] = scene.torque(tk)
+            gear.fmu.setReal(vr_g_in, [t_s[k], t_w])
+            if algorithm == "jacobi":
+                veh.fmu.setReal(vr_v_in, [w_w])
+                gear.fmu.doStep(tk, ns * 1e-9)
+                veh.fmu.doStep(tk, ns * 1e-9)
+                g_out, v_out = gear.fmu.getReal(vr_g_out), veh.fmu.getReal(vr_v_out)
+            else:
+                gear.fmu.doStep(tk, ns * 1e-9)
+                g_out = gear.fmu.getReal(vr_g_out)
+                veh.fmu.setReal(vr_v_in, [g_out[i_ww]])
+                veh.fmu.doStep(tk, ns * 1e-9)
+                v_out = veh.fmu.getReal(vr_v_out)
+            w_w, t_w = g_out[i_ww], v_out[i_ths]
+            g_rows.append(g_out)
+            v_rows.append(v_out)
+        t_s[n] = t_s[n - 1]
+        for s in (gear, veh):
+            s.fmu.terminate()
+            s.fmu.freeInstance()
+    finally:
+        shutil.rmtree(workdir, ignore_errors=True)
+    g_arr, v_arr = np.array(g_rows), np.array(v_rows)
+    return Result(f"fmpy-{algorithm}", h, t, t_s,
+                  {name: g_arr[:, j] for j, name in enumerate(GEAR_OUT)},
+                  {name: v_arr[:, j] for j, name in enumerate(VEHICLE_OUT)},
+                  time.perf_counter() - wall)
+
+
+# ------------------------------------------------------------------ fmu-manipulation-toolbox
+
+
+def make_container(scene, h, directory):
+    """A container FMU (fmu-manipulation-toolbox) of the gear and the vehicle, linked as above,
+    with the scene's start values, internal step h, the gear's free inputs (T_s, T_bath, w_set) as
+    its inputs (fmpy leaves the last two at their start values) and every recorded output as
+    gear_NAME / vehicle_NAME (the linked ports are exposed as locals gear.w_w, vehicle.T_hs).
+    Its default scheduling is parallel: Jacobi, like libcosim."""
+    from fmu_manipulation_toolbox.assembly import AssemblyNode
+    directory = pathlib.Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    shutil.copy(GEAR_FMU, directory / "gear.fmu")
+    shutil.copy(VEHICLE_FMU, directory / "vehicle.fmu")
+    node = AssemblyNode("GearVehicle.fmu", step_size=h, auto_link=False, auto_input=False,
+                        auto_output=False)
+    node.add_fmu("gear.fmu")
+    node.add_fmu("vehicle.fmu")
+    node.add_link("gear.fmu", "w_w", "vehicle.fmu", "w_w")
+    node.add_link("vehicle.fmu", "T_hs", "gear.fmu", "T_w")
+    for name in ("T_s", "T_bath", "w_set"):  # w_set: unused with load_mode = torque
+        node.add_input(name, "gear.fmu", name)
+    for name, value in scene.gear_start().items():
+        if name != "T_s":
+            node.add_start_value("gear.fmu", name, repr(value))
+    for name, value in scene.vehicle_start().items():
+        node.add_start_value("vehicle.fmu", name, repr(value))
+    for name in GEAR_OUT:
+        node.add_output("gear.fmu", name, "gear_" + name)
+    for name in VEHICLE_OUT:
+        node.add_output("vehicle.fmu", name, "vehicle_" + name)
+    import logging
+    quiet = logging.getLogger("fmu_manipulation_toolbox")
+    level = quiet.level
+    quiet.setLevel(logging.ERROR)  # one line per unconnected output otherwise
+    try:
+        node.make_fmu(directory)
+    finally:
+        quiet.setLevel(level)
+    return directory / "GearVehicle.fmu"
+
+
+def run_container(scene, h, container):
+    """The container FMU run by fmpy.simulate_fmu with the communication step h; T_s is given as
+    fmpy's input signal (the profile's breakpoints, interpolated at each communication point), the
+    other inputs at their start values."""
+    from fmpy import read_model_description, simulate_fmu
+    wall = time.perf_counter()
+    held = {v.name: float(v.start) for v in read_model_description(str(container)).modelVariables
+            if v.causality == "input" and v.name != "T_s"}  # T_bath, w_set at their start values
+    signal = np.array([(t, ts, *held.values()) for t, ts in scene.profile],
+                      dtype=[("time", float), ("T_s", float)] + [(n, float) for n in held])
+    log = []
+
+    def logger(component, instance, status, category, message):
+        log.append((status, message.decode(errors="replace")))
+
+    r = simulate_fmu(str(container), stop_time=scene.stop_time, output_interval=h, input=signal,
+                     output=["gear_" + n for n in GEAR_OUT] + ["vehicle_" + n for n in VEHICLE_OUT],
+                     logger=logger)
+    t_s = np.array([scene.torque(t) for t in r["time"]])
+    return Result("container", h, r["time"], t_s, {n: r["gear_" + n] for n in GEAR_OUT},
+                  {n: r["vehicle_" + n] for n in VEHICLE_OUT}, time.perf_counter() - wall, log)
+
+
+def container_available():
+    try:
+        import fmu_manipulation_toolbox.assembly  # noqa: F401 - only: is it there?
+    except ImportError as e:
+        return f"{type(e).__name__}: {e}"
+    return None
+
+
+# ------------------------------------------------------------------ the figures
+
+
+def study(steps, scene=None, gauss_seidel=True, container=True):
+    """Runs the scene at each step with libcosim, fmpy (and the container); returns the runs and
+    a JSON-able summary."""
+    scene = scene or Scene()
+    container = container and container_available() is None
+    tmp = pathlib.Path(tempfile.mkdtemp(prefix="cosim-"))
+    try:
+        gear_lc = libcosim_view(GEAR_FMU, tmp / "HypoidGearPair_libcosim.fmu")
+        runs = {}
+        for h in steps:
+            runs[h] = {"libcosim": run_libcosim(scene, h, gear_lc),
+                       "jacobi": run_fmpy(scene, h, "jacobi")}
+            if gauss_seidel:
+                runs[h]["gauss-seidel"] = run_fmpy(scene, h, "gauss-seidel")
+            if container:
+                box = make_container(scene, h, tmp / f"container-{h:g}")
+                runs[h]["container"] = run_container(scene, h, box)
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+    finest = runs[min(steps)]["libcosim"]
+    rows = []
+    for h in steps:
+        lc = runs[h]["libcosim"]
+        row = {"h": h, "wall_libcosim": lc.wall, "wall_fmpy": runs[h]["jacobi"].wall,
+               "energy": energy_balance(lc),
+               "energy_fmpy": energy_balance(runs[h]["jacobi"]),
+               "libcosim_vs_fmpy": difference(lc, runs[h]["jacobi"]),
+               "final": {"v": float(lc.vehicle["v"][-1]), "w_p": float(lc.gear["w_p"][-1])}}
+        if gauss_seidel:
+            row["jacobi_vs_gauss_seidel"] = difference(lc, runs[h]["gauss-seidel"])
+            row["energy_gauss_seidel"] = energy_balance(runs[h]["gauss-seidel"])
+        if container:
+            row["container_vs_fmpy"] = difference(runs[h]["container"], runs[h]["jacobi"])
+            row["wall_container"] = runs[h]["container"].wall
+        if h != min(steps):
+            row["vs_finest"] = difference(lc, finest, h=h)
+        rows.append(row)
+    return runs, rows
+
+
+def plot(runs, rows, path):
+    """The scene at the coarsest and finest step (libcosim), and the energy residual and the
+    libcosim-fmpy and Jacobi-Gauss-Seidel differences against the step."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    steps = sorted(runs)
+    fig = plt.figure(figsize=(11, 8.5), layout="constrained")
+    grid = fig.add_gridspec(4, 2, width_ratios=(1.6, 1))
+    axes = [fig.add_subplot(grid[k, 0]) for k in range(4)]
+    for h in (steps[-1], steps[0]):
+        r = runs[h]["libcosim"]
+        lab = f"h = {h * 1e3:g} ms"
+        axes[0].plot(r.t, r.T_s, lw=1, label=lab)
+        axes[1].plot(r.t, r.gear["w_p"] * 30 / math.pi, lw=0.8, label=lab)
+        axes[2].plot(r.t, r.gear["T_w_out"], lw=0.8, label=lab)
+        axes[3].plot(r.t, r.vehicle["v"] * 3.6, lw=1, label=lab)
+    for ax, lab in zip(axes, ("T_s (N.m)", "pinion speed (rpm)", "T_w = T_hs (N.m)",
+                              "vehicle speed (km/h)")):
+        ax.set_ylabel(lab)
+        ax.grid(alpha=0.3)
+    axes[0].legend(loc="lower right", fontsize=8)
+    axes[0].set_title("libcosim: gear FMU + vehicle FMU, launch / tip-out / tip-in")
+    axes[3].set_xlabel("t (s)")
+    hs = np.array([r["h"] for r in rows]) * 1e3
+    ax = fig.add_subplot(grid[0:2, 1])
+    ax.loglog(hs, [abs(r["energy"]["residual"]) for r in rows], "o-", label="|energy residual| (J)")
+    ax.loglog(hs, [abs(r["energy"]["gear_closure"]) for r in rows], "s:",
+              label="gear FMU's own closure (J)")
+    ax.loglog(hs, abs(rows[0]["energy"]["residual"]) * hs / hs[0], "k--", lw=0.8, label="~ h")
+    ax.set_xlabel("communication step (ms)")
+    ax.set_title(f"energy balance, W_Ts = {rows[-1]['energy']['W_Ts']:.0f} J")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3, which="both")
+    ax = fig.add_subplot(grid[2:4, 1])
+    ax.loglog(hs, [r["jacobi_vs_gauss_seidel"]["gear.w_p"]["rel"] for r in rows
+                   if "jacobi_vs_gauss_seidel" in r] or [np.nan] * len(hs), "o-",
+              label="Jacobi - Gauss-Seidel (coupling error)")
+    ax.loglog(hs, [max(r["libcosim_vs_fmpy"]["gear.w_p"]["rel"], 1e-16) for r in rows], "s-",
+              label="libcosim - fmpy (same algorithm)")
+    ax.set_xlabel("communication step (ms)")
+    ax.set_title("max |difference| of w_p / max |w_p|")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3, which="both")
+    fig.savefig(path, dpi=80)
+    plt.close(fig)
+
+
+def print_table(rows):
+    nan = {"rel": float("nan"), "rms_rel": float("nan")}
+    print("energy (libcosim runs; J):")
+    print(f"{'h (ms)':>7} {'W_Ts':>9} {'residual':>11} {'rel':>9} {'coupling':>11} "
+          f"{'gear own':>10} {'vehicle own':>11} {'wall lc/fmpy/box (s)':>21}")
+    for r in rows:
+        e = r["energy"]
+        print(f"{r['h'] * 1e3:7.2f} {e['W_Ts']:9.2f} {e['residual']:11.3e} "
+              f"{e['relative_residual']:9.2e} {e['coupling']:11.3e} {e['gear_closure']:10.2e} "
+              f"{e['vehicle_closure']:11.2e} {r['wall_libcosim']:9.1f}/{r['wall_fmpy']:.1f}/"
+              f"{r.get('wall_container', float('nan')):.1f}")
+    print("differences of the gear outputs, max over the run / max |signal| (RMS / RMS for eta):")
+    print(f"{'h (ms)':>7} {'output':>8} {'lc-fmpy':>9} {'box-fmpy':>9} {'Jac-GS':>9} "
+          f"{'vs finest':>9}")
+    for r in rows:
+        for name in ("w_p", "T_w_out", "eta"):
+            key = "rms_rel" if name == "eta" else "rel"
+            cols = [r.get(k, {}).get("gear." + name, nan)[key] for k in
+                    ("libcosim_vs_fmpy", "container_vs_fmpy", "jacobi_vs_gauss_seidel",
+                     "vs_finest")]
+            print(f"{r['h'] * 1e3:7.2f} {name:>8} " + " ".join(f"{c:9.2e}" for c in cols))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--steps", type=float, nargs="+", default=[2e-3, 1e-3, 5e-4, 2e-4, 1e-4])
+    ap.add_argument("--no-gauss-seidel", action="store_true")
+    ap.add_argument("--no-container", action="store_true")
+    ap.add_argument("--json", help="write the summary here")
+    ap.add_argument("--plot", help="write the figure here (PNG)")
+    args = ap.parse_args()
+    why = libcosim_available()
+    if why:
+        sys.exit(f"libcosimpy is not usable here: {why}")
+    runs, rows = study(sorted(args.steps, reverse=True), gauss_seidel=not args.no_gauss_seidel,
+                       container=not args.no_container)
+    print_table(rows)
+    if args.json:
+        pathlib.Path(args.json).write_text(json.dumps(rows, indent=1, default=float))
+    if args.plot:
+        plot(runs, rows, args.plot)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
