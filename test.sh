@@ -1,8 +1,14 @@
 #!/usr/bin/env bash
 # Builds everything on a fresh machine and runs all tests: C unit tests (ctest), then the FMU
-# through fmpy (pytest).
+# through fmpy (pytest), then the robustness runs below (about 2.5 minutes on 2 cores).
 set -euo pipefail
 cd "$(dirname "$0")"
 scripts/setup.sh
 ctest --test-dir build --output-on-failure -j"$(nproc)"
 .venv/bin/python -m pytest -q "$@"
+# Robustness (docs/integration.md): fuzzing the C API for 60 s, the sanitizer build (ctest, C host,
+# fmpy, bad-input cases), valgrind memcheck and helgrind, soak and threads with the C host.
+scripts/fuzz.sh 60
+scripts/sanitize.sh
+scripts/valgrind.sh
+scripts/soak.sh 2000

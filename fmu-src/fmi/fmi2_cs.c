@@ -1,5 +1,6 @@
 /* FMI 2.0 co-simulation interface: instance life cycle, state machine, logging, variable access
  * and stepping. Physics lives in model/; this file only translates FMI calls. */
+#include <ctype.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -11,6 +12,8 @@
 #define ALL_STATES (ST_INSTANTIATED | ST_INITIALIZATION | ST_STEP_COMPLETE | ST_TERMINATED | ST_ERROR)
 #define READABLE (ST_INITIALIZATION | ST_STEP_COMPLETE | ST_TERMINATED | ST_ERROR)
 #define BEFORE_RUN (ST_INSTANTIATED | ST_INITIALIZATION)
+#define MAX_COMM_STEP 1000.0 /* [s] longest communication step (docs/integration.md, limits) */
+#define TIME_RESOLUTION 1e-6 /* largest relative rounding error of t + h accepted by fmi2DoStep */
 
 static const char *const category_names[N_CATEGORIES] = {"logEvents", "logStatusWarning",
                                                          "logStatusError", "logAll"};
@@ -94,7 +97,11 @@ static int set_categories(hg_instance *c, fmi2Boolean on, size_t n, const fmi2St
         c->log_on[CAT_WARNING] = c->log_on[CAT_ERROR] = 1; /* problems are always reported */
         return 0;
     }
-    if (!cats) return -1;
+    if (!cats) {
+        hg_log(c, fmi2Error, CAT_ERROR, "fmi2SetDebugLogging: nCategories = %zu but categories "
+               "is NULL", n);
+        return -1;
+    }
     for (i = 0; i < n; i++) {
         for (k = 0; k < N_CATEGORIES; k++)
             if (cats[i] && strcmp(cats[i], category_names[k]) == 0) break;
@@ -132,9 +139,19 @@ static int reset_instance(hg_instance *c)
     c->model = NULL;
     c->set_up = 0;
     c->start_time = 0.0;
+    c->stop_defined = 0;
+    c->stop_time = 0.0;
     memset(&c->input_der, 0, sizeof c->input_der);
     c->state = ST_INSTANTIATED;
     return hg_vars_reset(&c->vars);
+}
+
+/* The standard asks for at least one character that is not white space. */
+static int blank(const char *s)
+{
+    if (!s) return 1;
+    while (*s && isspace((unsigned char)*s)) s++;
+    return *s == '\0';
 }
 
 static int check_instantiate_args(hg_instance *c, fmi2Type type, fmi2String guid)
@@ -169,8 +186,9 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
         return NULL;
     }
     strcpy(c->name, name ? name : "");
-    if (!name || !*name) {
-        hg_log(c, fmi2Error, CAT_ERROR, "fmi2Instantiate: instanceName is empty");
+    if (blank(name)) {
+        hg_log(c, fmi2Error, CAT_ERROR, "fmi2Instantiate: instanceName '%s' is empty or blank",
+               name ? name : "(null)");
         free_instance(c);
         return NULL;
     }
@@ -201,6 +219,8 @@ fmi2Status fmi2SetupExperiment(fmi2Component comp, fmi2Boolean tol_defined, fmi2
         return fmi2Error;
     }
     c->start_time = start;
+    c->stop_defined = stop_defined != fmi2False;
+    c->stop_time = c->stop_defined ? stop : 0.0;
     return fmi2OK;
 }
 
@@ -212,10 +232,67 @@ fmi2Status fmi2EnterInitializationMode(fmi2Component comp)
     return fmi2OK;
 }
 
+/* ------------------------------------------------------------------ checks on the results */
+
+double hg_real_value(const hg_instance *c, const hg_var_info *info)
+{
+    return *(const double *)((const char *)&c->vars + info->offset);
+}
+
+const hg_var_info *hg_first_nonfinite(const hg_instance *c, int calculated_too)
+{
+    int r;
+    for (r = 0; r < HG_NUM_VARS; r++) {
+        const hg_var_info *info = &hg_var_table[r];
+        int checked = info->causality == HG_OUTPUT ||
+                      (calculated_too && info->causality == HG_CALCULATED);
+        if (checked && info->type == HG_REAL && !isfinite(hg_real_value(c, info))) return info;
+    }
+    return NULL;
+}
+
+static double *input_slot(hg_dyn_inputs *u, const char *name)
+{
+    if (strcmp(name, "T_s") == 0) return &u->T_s;
+    if (strcmp(name, "T_w") == 0) return &u->T_w;
+    if (strcmp(name, "T_bath") == 0) return &u->T_bath;
+    if (strcmp(name, "w_set") == 0) return &u->w_set;
+    return NULL;
+}
+
+/* The first time derivative the host gave for an input (0 when none). */
+static double derivative_of(const hg_instance *c, const hg_var_info *info)
+{
+    const double *d = input_slot((hg_dyn_inputs *)&c->input_der, info->name);
+    return d ? *d : 0.0;
+}
+
+/* "T_s = 100, T_w = 276.9, ...": the inputs, for messages about failed set-ups and steps. */
+static void describe_inputs(const hg_instance *c, char *out, size_t len)
+{
+    size_t used = 0;
+    int r;
+    out[0] = '\0';
+    for (r = 0; r < HG_NUM_VARS && used < len; r++) {
+        const hg_var_info *info = &hg_var_table[r];
+        int n;
+        if (info->causality != HG_INPUT || info->type != HG_REAL) continue;
+        n = derivative_of(c, info) != 0.0
+                ? snprintf(out + used, len - used, "%s%s = %g changing at %g /s", used ? ", " : "",
+                           info->name, hg_real_value(c, info), derivative_of(c, info))
+                : snprintf(out + used, len - used, "%s%s = %g", used ? ", " : "", info->name,
+                           hg_real_value(c, info));
+        if (n < 0) break;
+        used += (size_t)n;
+    }
+}
+
 /* Sets the model up for the current parameters and initial inputs, once. */
 static fmi2Status ensure_set_up(hg_instance *c, const char *fn)
 {
     char err[HG_ERRLEN];
+    const hg_var_info *bad;
+    hg_vars before;
     if (c->set_up) return fmi2OK;
     if (!c->resource_dir) {
         hg_log(c, fmi2Error, CAT_ERROR, "%s: no fmuResourceLocation was given at instantiation, "
@@ -226,8 +303,18 @@ static fmi2Status ensure_set_up(hg_instance *c, const char *fn)
         hg_log(c, fmi2Error, CAT_ERROR, "%s: out of memory", fn);
         return fmi2Error;
     }
+    before = c->vars; /* shallow copy: only its results are ever copied back */
     if (hg_model_setup(c->model, &c->vars, c->start_time, err, sizeof err)) {
+        hg_vars_copy_results(&c->vars, &before);
         hg_log(c, fmi2Error, CAT_ERROR, "%s: %s", fn, err);
+        return fmi2Error;
+    }
+    if ((bad = hg_first_nonfinite(c, 1)) != NULL) {
+        double value = hg_real_value(c, bad);
+        hg_vars_copy_results(&c->vars, &before);
+        describe_inputs(c, err, sizeof err);
+        hg_log(c, fmi2Error, CAT_ERROR, "%s: %s = %g at the start: the parameters and inputs "
+               "(%s) are beyond the model's reach", fn, bad->name, value, err);
         return fmi2Error;
     }
     c->set_up = 1;
@@ -270,7 +357,7 @@ static const hg_var_info *lookup(hg_instance *c, const char *fn, fmi2ValueRefere
         return NULL;
     }
     if (hg_var_table[vr].type != type) {
-        hg_log(c, fmi2Error, CAT_ERROR, "%s: value reference %u is '%s', a %s variable", fn,
+        hg_log(c, fmi2Error, CAT_ERROR, "%s: value reference %u is '%s', of type %s", fn,
                (unsigned)vr, hg_var_table[vr].name, type_names[hg_var_table[vr].type]);
         return NULL;
     }
@@ -462,15 +549,6 @@ fmi2Status fmi2SetString(fmi2Component comp, const fmi2ValueReference vr[], size
 
 /* ------------------------------------------------------------------ stepping */
 
-static double *input_slot(hg_dyn_inputs *u, const char *name)
-{
-    if (strcmp(name, "T_s") == 0) return &u->T_s;
-    if (strcmp(name, "T_w") == 0) return &u->T_w;
-    if (strcmp(name, "T_bath") == 0) return &u->T_bath;
-    if (strcmp(name, "w_set") == 0) return &u->w_set;
-    return NULL;
-}
-
 fmi2Status fmi2SetRealInputDerivatives(fmi2Component comp, const fmi2ValueReference vr[],
                                        size_t nvr, const fmi2Integer order[],
                                        const fmi2Real value[])
@@ -510,41 +588,94 @@ fmi2Status fmi2GetRealOutputDerivatives(fmi2Component comp, const fmi2ValueRefer
     return fmi2Error;
 }
 
-static int outputs_finite(hg_instance *c)
+/* The model time; the start time while no model is set up. */
+static double model_time(const hg_instance *c)
+{
+    return c->set_up && c->model ? hg_model_time(c->model) : c->start_time;
+}
+
+/* Inputs extrapolated with their derivatives must stay finite and in range over the step. */
+static int check_extrapolation(hg_instance *c, double h)
 {
     int r;
     for (r = 0; r < HG_NUM_VARS; r++) {
         const hg_var_info *info = &hg_var_table[r];
-        if (info->causality == HG_OUTPUT && info->type == HG_REAL &&
-            !isfinite(*(double *)field(c, info))) {
-            hg_log(c, fmi2Error, CAT_ERROR, "fmi2DoStep: output %s became %g at t = %.9g s",
-                   info->name, *(double *)field(c, info), hg_model_time(c->model));
-            return 0;
-        }
+        double u, du, end;
+        if (info->causality != HG_INPUT || info->type != HG_REAL) continue;
+        u = hg_real_value(c, info);
+        du = derivative_of(c, info);
+        end = u + du * h;
+        if (du == 0.0 || (isfinite(end) && !(info->has_min && end < info->min) &&
+                          !(info->has_max && end > info->max)))
+            continue;
+        hg_log(c, fmi2Error, CAT_ERROR, "fmi2DoStep: input %s = %g with derivative %g /s would "
+               "reach %g over the step of %g s, outside its range [%g, %g]", info->name, u, du,
+               end, h, info->has_min ? info->min : -HUGE_VAL,
+               info->has_max ? info->max : HUGE_VAL);
+        return -1;
     }
-    return 1;
+    return 0;
+}
+
+/* Checks fmi2DoStep's arguments against the FMU time, the stop time and the time resolution. */
+static int check_step(hg_instance *c, double t, double h)
+{
+    double now = model_time(c);
+    if (!isfinite(h) || h < 0.0 || !isfinite(t) || fabs(t - now) > 1e-9 * (1.0 + fabs(now))) {
+        hg_log(c, fmi2Error, CAT_ERROR, "fmi2DoStep: communication point %.12g with step %g does "
+               "not continue the FMU time %.12g (or is not finite / negative)", t, h, now);
+        return -1;
+    }
+    if (h > MAX_COMM_STEP) {
+        hg_log(c, fmi2Error, CAT_ERROR, "fmi2DoStep: communicationStepSize = %g s is longer than "
+               "the limit of %g s", h, MAX_COMM_STEP);
+        return -1;
+    }
+    if (h > 0.0 && fabs((now + h) - now - h) > TIME_RESOLUTION * h) {
+        hg_log(c, fmi2Error, CAT_ERROR, "fmi2DoStep: communicationStepSize = %g s is below the "
+               "resolution of the time t = %.17g s (t + h rounds off more than %g of it)", h, now,
+               TIME_RESOLUTION);
+        return -1;
+    }
+    if (check_extrapolation(c, h)) return -1;
+    if (c->stop_defined && now + h > c->stop_time + 1e-9 * (1.0 + fabs(c->stop_time))) {
+        hg_log(c, fmi2Error, CAT_ERROR, "fmi2DoStep: the step from t = %.12g s by %g s passes the "
+               "stopTime %.12g s given to fmi2SetupExperiment", now, h, c->stop_time);
+        return -1;
+    }
+    return 0;
+}
+
+/* A failed step: the instance goes to the error state with the last good outputs readable. */
+static fmi2Status step_failed(hg_instance *c, const hg_vars *good, const char *why)
+{
+    char inputs[HG_ERRLEN / 2];
+    describe_inputs(c, inputs, sizeof inputs);
+    hg_vars_copy_results(&c->vars, good);
+    hg_log(c, fmi2Error, CAT_ERROR, "fmi2DoStep: %s (inputs %s)", why, inputs);
+    c->state = ST_ERROR;
+    return fmi2Error;
 }
 
 fmi2Status fmi2DoStep(fmi2Component comp, fmi2Real t, fmi2Real h, fmi2Boolean no_prior)
 {
     hg_instance *c = comp;
     char err[HG_ERRLEN];
-    double now;
+    hg_vars good;
+    const hg_var_info *bad;
     (void)no_prior;
     if (!hg_allowed(c, "fmi2DoStep", ST_STEP_COMPLETE)) return fmi2Error;
-    now = hg_model_time(c->model);
-    if (!isfinite(h) || h < 0.0 || !isfinite(t) || fabs(t - now) > 1e-9 * (1.0 + fabs(now))) {
-        hg_log(c, fmi2Error, CAT_ERROR, "fmi2DoStep: communication point %.12g with step %g does "
-               "not continue the FMU time %.12g (or is not finite / negative)", t, h, now);
-        return fmi2Error;
-    }
+    if (!c->set_up || !c->model) return fail(c, "fmi2DoStep", "the model is not set up");
+    if (check_step(c, t, h)) return fmi2Error;
     hg_log(c, fmi2OK, CAT_ALL, "fmi2DoStep: t = %.9g s, h = %g s", t, h);
+    good = c->vars; /* shallow copy: only its results are ever copied back */
     if (h > 0.0 && hg_model_step(c->model, &c->vars, &c->input_der, h, err, sizeof err))
-        return fail(c, "fmi2DoStep", err);
+        return step_failed(c, &good, err);
     memset(&c->input_der, 0, sizeof c->input_der); /* derivatives apply to one step */
-    if (!outputs_finite(c)) {
-        c->state = ST_ERROR;
-        return fmi2Error;
+    if ((bad = hg_first_nonfinite(c, 0)) != NULL) {
+        snprintf(err, sizeof err, "output %s became %g at t = %.9g s", bad->name,
+                 hg_real_value(c, bad), hg_model_time(c->model));
+        return step_failed(c, &good, err);
     }
     return fmi2OK;
 }
@@ -565,10 +696,19 @@ static fmi2Status status_query(hg_instance *c, const char *fn)
     return fmi2OK;
 }
 
+/* A status query's value pointer must not be NULL. */
+static int value_given(hg_instance *c, const char *fn, const void *value)
+{
+    if (value) return 1;
+    hg_log(c, fmi2Error, CAT_ERROR, "%s: the value pointer is NULL", fn);
+    return 0;
+}
+
 fmi2Status fmi2GetStatus(fmi2Component comp, const fmi2StatusKind s, fmi2Status *value)
 {
     hg_instance *c = comp;
-    if (status_query(c, "fmi2GetStatus") != fmi2OK || !value) return fmi2Error;
+    if (status_query(c, "fmi2GetStatus") != fmi2OK || !value_given(c, "fmi2GetStatus", value))
+        return fmi2Error;
     if (s != fmi2DoStepStatus) return fmi2Discard;
     *value = c->state == ST_ERROR ? fmi2Error : fmi2OK;
     return fmi2OK;
@@ -577,9 +717,11 @@ fmi2Status fmi2GetStatus(fmi2Component comp, const fmi2StatusKind s, fmi2Status 
 fmi2Status fmi2GetRealStatus(fmi2Component comp, const fmi2StatusKind s, fmi2Real *value)
 {
     hg_instance *c = comp;
-    if (status_query(c, "fmi2GetRealStatus") != fmi2OK || !value) return fmi2Error;
+    if (status_query(c, "fmi2GetRealStatus") != fmi2OK ||
+        !value_given(c, "fmi2GetRealStatus", value))
+        return fmi2Error;
     if (s != fmi2LastSuccessfulTime) return fmi2Discard;
-    *value = hg_model_time(c->model);
+    *value = model_time(c);
     return fmi2OK;
 }
 
@@ -593,7 +735,9 @@ fmi2Status fmi2GetIntegerStatus(fmi2Component comp, const fmi2StatusKind s, fmi2
 fmi2Status fmi2GetBooleanStatus(fmi2Component comp, const fmi2StatusKind s, fmi2Boolean *value)
 {
     hg_instance *c = comp;
-    if (status_query(c, "fmi2GetBooleanStatus") != fmi2OK || !value) return fmi2Error;
+    if (status_query(c, "fmi2GetBooleanStatus") != fmi2OK ||
+        !value_given(c, "fmi2GetBooleanStatus", value))
+        return fmi2Error;
     if (s != fmi2Terminated) return fmi2Discard;
     *value = fmi2False; /* the model never asks to end the simulation */
     return fmi2OK;

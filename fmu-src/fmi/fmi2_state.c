@@ -1,6 +1,7 @@
 /* FMU state snapshots: get, set, free, serialize and deserialize (deep copies throughout). */
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -13,6 +14,8 @@ typedef struct {
     hg_fmi_state state;
     int set_up;
     double start_time;
+    int stop_defined;
+    double stop_time;
     hg_dyn_inputs input_der;
     hg_vars vars;  /* strings owned by the snapshot */
     hg_runtime rt; /* meaningful when set_up */
@@ -39,22 +42,38 @@ fmi2Status fmi2GetFMUstate(fmi2Component comp, fmi2FMUstate *out)
     s->state = c->state;
     s->set_up = c->set_up;
     s->start_time = c->start_time;
+    s->stop_defined = c->stop_defined;
+    s->stop_time = c->stop_time;
     s->input_der = c->input_der;
     if (c->set_up) hg_model_save(c->model, &s->rt);
     *out = s;
     return fmi2OK;
 }
 
+/* A failed restore: the error state, with the results the instance had before. */
+static fmi2Status restore_failed(hg_instance *c, const hg_vars *before, const char *why)
+{
+    hg_vars_copy_results(&c->vars, before);
+    hg_log(c, fmi2Error, CAT_ERROR, "fmi2SetFMUstate: %s", why);
+    c->state = ST_ERROR;
+    return fmi2Error;
+}
+
 static fmi2Status restore(hg_instance *c, const hg_snapshot *s)
 {
     char err[HG_ERRLEN];
+    const hg_var_info *bad;
+    hg_vars before;
     int same = c->set_up && hg_vars_same_parameters(&c->vars, &s->vars);
+    before = c->vars; /* shallow copy: only its results are ever copied back */
     if (hg_vars_copy(&c->vars, &s->vars)) {
         hg_log(c, fmi2Error, CAT_ERROR, "fmi2SetFMUstate: out of memory");
         return fmi2Error;
     }
     c->state = s->state;
     c->start_time = s->start_time;
+    c->stop_defined = s->stop_defined;
+    c->stop_time = s->stop_time;
     c->input_der = s->input_der;
     c->set_up = 0;
     if (!s->set_up) return fmi2OK;
@@ -63,10 +82,11 @@ static fmi2Status restore(hg_instance *c, const hg_snapshot *s)
         return fmi2Error;
     }
     if ((!same && hg_model_setup(c->model, &c->vars, c->start_time, err, sizeof err)) ||
-        hg_model_restore(c->model, &c->vars, &s->rt, err, sizeof err)) {
-        hg_log(c, fmi2Error, CAT_ERROR, "fmi2SetFMUstate: %s", err);
-        c->state = ST_ERROR;
-        return fmi2Error;
+        hg_model_restore(c->model, &c->vars, &s->rt, err, sizeof err))
+        return restore_failed(c, &before, err);
+    if ((bad = hg_first_nonfinite(c, 1)) != NULL) {
+        snprintf(err, sizeof err, "the state gives %s = %g", bad->name, hg_real_value(c, bad));
+        return restore_failed(c, &before, err);
     }
     c->set_up = 1;
     return fmi2OK;
@@ -146,7 +166,7 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component comp, fmi2FMUstate state, fmi2Byt
                "of %zu bytes is smaller than the %zu needed", size, s ? serialized_size(s) : 0);
         return fmi2Error;
     }
-    flat = *s;
+    memcpy(&flat, s, sizeof flat); /* bytes, padding included: the blob is deterministic */
     memcpy(o, &magic, sizeof magic), o += sizeof magic;
     memcpy(o, &n, sizeof n), o += sizeof n;
     for (r = 0; r < HG_NUM_VARS; r++)
@@ -164,25 +184,43 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component comp, fmi2FMUstate state, fmi2Byt
 }
 
 /* A deserialized snapshot comes from outside: check what would make it unsafe or meaningless. */
-static int snapshot_valid(const hg_snapshot *s)
+static int header_valid(const hg_snapshot *s)
 {
-    int r;
+    const hg_dyn_inputs *d = &s->input_der;
     if (s->state != ST_INSTANTIATED && s->state != ST_INITIALIZATION &&
         s->state != ST_STEP_COMPLETE && s->state != ST_TERMINATED && s->state != ST_ERROR)
         return 0;
-    if (s->set_up && (s->rt.mode < -1 || s->rt.mode > 1 || !isfinite(s->rt.t))) return 0;
+    if ((s->set_up != 0 && s->set_up != 1) || (s->stop_defined != 0 && s->stop_defined != 1))
+        return 0;
+    if (s->state == ST_STEP_COMPLETE && !s->set_up) return 0; /* stepping needs a set-up model */
+    if (!isfinite(s->start_time) || (s->stop_defined && !(s->stop_time >= s->start_time)))
+        return 0;
+    if (!isfinite(d->T_s) || !isfinite(d->T_w) || !isfinite(d->T_bath) || !isfinite(d->w_set))
+        return 0;
+    return !s->set_up || (s->rt.mode >= -1 && s->rt.mode <= 1 && isfinite(s->rt.t));
+}
+
+/* Every variable must be one the FMU could hold: finite, parameters and inputs in range. */
+static int vars_valid(const hg_vars *v)
+{
+    int r;
     for (r = 0; r < HG_NUM_VARS; r++) {
         const hg_var_info *info = &hg_var_table[r];
-        const char *p = (const char *)&s->vars + info->offset;
-        double v;
-        if (info->type == HG_STRING || info->causality == HG_OUTPUT ||
-            info->causality == HG_CALCULATED)
-            continue;
-        v = info->type == HG_REAL ? *(const double *)p : *(const int *)p;
-        if (!isfinite(v) || (info->has_min && v < info->min) || (info->has_max && v > info->max))
+        const char *p = (const char *)v + info->offset;
+        int ranged = info->causality == HG_PARAMETER || info->causality == HG_INPUT;
+        double x;
+        if (info->type == HG_STRING) continue;
+        x = info->type == HG_REAL ? *(const double *)p : *(const int *)p;
+        if (!isfinite(x)) return 0;
+        if (ranged && ((info->has_min && x < info->min) || (info->has_max && x > info->max)))
             return 0;
     }
     return 1;
+}
+
+static int snapshot_valid(const hg_snapshot *s)
+{
+    return header_valid(s) && vars_valid(&s->vars);
 }
 
 static int read_strings(hg_snapshot *s, const char *in, const char *end)

@@ -13,22 +13,31 @@ static int hex_value(char ch)
     return ch >= 'a' && ch <= 'f' ? ch - 'a' + 10 : -1;
 }
 
+/* Does s start with prefix, ignoring ASCII case (URI schemes and host names are
+ * case-insensitive)? */
+static int starts_with_nocase(const char *s, const char *prefix)
+{
+    for (; *prefix; s++, prefix++)
+        if (tolower((unsigned char)*s) != tolower((unsigned char)*prefix)) return 0;
+    return 1;
+}
+
 /* Skips "file:", then "//" + authority (empty or "localhost"), leaving the absolute path. */
 static const char *path_part(const char *uri, char *why, size_t whylen)
 {
     const char *p;
-    if (strncmp(uri, "file:", 5) != 0) {
+    if (!starts_with_nocase(uri, "file:")) {
         snprintf(why, whylen, "'%.200s' is not a file:// URI", uri);
         return NULL;
     }
     p = uri + 5;
     if (strncmp(p, "//", 2) == 0) {
         p += 2;
-        if (strncmp(p, "localhost/", 10) == 0)
+        if (starts_with_nocase(p, "localhost/"))
             p += 9;
         else if (*p != '/') {
-            snprintf(why, whylen, "'%.200s' names a remote host; only local files are supported",
-                     uri);
+            snprintf(why, whylen, *p ? "'%.200s' names a remote host; only local files are "
+                     "supported" : "'%.200s' has no path", uri);
             return NULL;
         }
     }

@@ -73,3 +73,16 @@ int hg_vars_same_parameters(const hg_vars *a, const hg_vars *b)
     }
     return 1;
 }
+
+void hg_vars_copy_results(hg_vars *dst, const hg_vars *src)
+{
+    int r;
+    for (r = 0; r < HG_NUM_VARS; r++) {
+        const hg_var_info *info = &hg_var_table[r];
+        if (info->causality != HG_OUTPUT && info->causality != HG_CALCULATED) continue;
+        if (info->type == HG_REAL)
+            *FIELD(dst, info, double) = *CFIELD(src, info, double);
+        else if (info->type != HG_STRING)
+            *FIELD(dst, info, int) = *CFIELD(src, info, int);
+    }
+}

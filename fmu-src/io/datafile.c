@@ -1,13 +1,18 @@
 /* Plain-text key/value data files: see datafile.h. */
+#define _POSIX_C_SOURCE 200809L /* open, fstat, fdopen, O_NONBLOCK, O_CLOEXEC */
 #include "datafile.h"
 
 #include <ctype.h>
 #include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #define MAX_FILE_BYTES (4L * 1024L * 1024L)
 
@@ -21,7 +26,7 @@ typedef struct {
 struct hg_datafile {
     char *path;
     entry *entries;
-    size_t n;
+    size_t n, cap;
 };
 
 static void fail(char *err, size_t errlen, const char *fmt, ...)
@@ -43,18 +48,39 @@ static char *dup_str(const char *s, size_t len)
     return d;
 }
 
-static char *read_whole_file(const char *path, long *size, char *err, size_t errlen)
+/* Opens path only when it is a regular file: a directory, device or FIFO is refused at once
+ * (a plain fopen of a FIFO would wait for a writer forever). *len receives the file size. */
+static FILE *open_regular(const char *path, long *len, char *err, size_t errlen)
 {
-    FILE *fp = fopen(path, "rb");
-    char *buf = NULL;
-    long len;
-    if (!fp) {
+    struct stat st;
+    FILE *fp;
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
         fail(err, errlen, "cannot open data file '%s': %s", path, strerror(errno));
         return NULL;
     }
-    if (fseek(fp, 0, SEEK_END) != 0 || (len = ftell(fp)) < 0 || fseek(fp, 0, SEEK_SET) != 0) {
-        fail(err, errlen, "cannot read data file '%s' (not a regular file?)", path);
-    } else if (len == 0) {
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        fail(err, errlen, "cannot read data file '%s': not a regular file (a directory, device "
+             "or pipe?)", path);
+        close(fd);
+        return NULL;
+    }
+    if (!(fp = fdopen(fd, "rb"))) {
+        fail(err, errlen, "cannot open data file '%s': %s", path, strerror(errno));
+        close(fd);
+        return NULL;
+    }
+    *len = st.st_size > LONG_MAX ? LONG_MAX : (long)st.st_size;
+    return fp;
+}
+
+static char *read_whole_file(const char *path, long *size, char *err, size_t errlen)
+{
+    char *buf = NULL;
+    long len = 0;
+    FILE *fp = open_regular(path, &len, err, errlen);
+    if (!fp) return NULL;
+    if (len == 0) {
         fail(err, errlen, "data file '%s' is empty", path);
     } else if (len > MAX_FILE_BYTES) {
         fail(err, errlen, "data file '%s' is %ld bytes, more than the limit of %ld", path, len,
@@ -85,31 +111,62 @@ static char *trim(char *s)
 static int add_entry(hg_datafile *f, char *line, int line_no, char *err, size_t errlen)
 {
     size_t klen = strcspn(line, " \t");
-    entry *grown;
-    size_t i;
-    for (i = 0; i < f->n; i++) {
-        if (strlen(f->entries[i].key) == klen && strncmp(f->entries[i].key, line, klen) == 0) {
-            fail(err, errlen, "%s, line %d: key '%.*s' repeats line %d", f->path, line_no,
-                 (int)klen, line, f->entries[i].line);
+    entry *e;
+    if (f->n == f->cap) {
+        size_t cap = f->cap ? 2 * f->cap : 64;
+        entry *grown = realloc(f->entries, cap * sizeof *grown);
+        if (!grown) {
+            fail(err, errlen, "out of memory reading '%s'", f->path);
             return -1;
         }
+        f->entries = grown;
+        f->cap = cap;
     }
-    grown = realloc(f->entries, (f->n + 1) * sizeof *grown);
-    if (!grown) {
-        fail(err, errlen, "out of memory reading '%s'", f->path);
-        return -1;
-    }
-    f->entries = grown;
-    grown[f->n].key = dup_str(line, klen);
-    grown[f->n].rest = dup_str(trim(line + klen), strlen(trim(line + klen)));
-    grown[f->n].line = line_no;
-    grown[f->n].used = 0;
-    f->n++;
-    if (!grown[f->n - 1].key || !grown[f->n - 1].rest) {
+    e = &f->entries[f->n++];
+    e->key = dup_str(line, klen);
+    e->rest = dup_str(trim(line + klen), strlen(trim(line + klen)));
+    e->line = line_no;
+    e->used = 0;
+    if (!e->key || !e->rest) {
         fail(err, errlen, "out of memory reading '%s'", f->path);
         return -1;
     }
     return 0;
+}
+
+static int by_key_then_line(const void *a, const void *b)
+{
+    const entry *x = *(const entry *const *)a, *y = *(const entry *const *)b;
+    int c = strcmp(x->key, y->key);
+    return c ? c : (x->line > y->line) - (x->line < y->line);
+}
+
+/* Fails on the first line (in file order) whose key an earlier line already has. Sorting keeps
+ * this O(n log n), so that a file of many keys cannot stall the FMU. */
+static int check_unique_keys(const hg_datafile *f, char *err, size_t errlen)
+{
+    const entry **sorted, *first = NULL, *repeat = NULL, *repeated = NULL;
+    size_t i;
+    if (f->n < 2) return 0;
+    if (!(sorted = malloc(f->n * sizeof *sorted))) {
+        fail(err, errlen, "out of memory reading '%s'", f->path);
+        return -1;
+    }
+    for (i = 0; i < f->n; i++) sorted[i] = &f->entries[i];
+    qsort(sorted, f->n, sizeof *sorted, by_key_then_line);
+    for (i = 0; i < f->n; i++) {
+        if (!first || strcmp(first->key, sorted[i]->key) != 0)
+            first = sorted[i];
+        else if (sorted[i - 1] == first && (!repeat || sorted[i]->line < repeat->line)) {
+            repeat = sorted[i];
+            repeated = first;
+        }
+    }
+    free(sorted);
+    if (!repeat) return 0;
+    fail(err, errlen, "%s, line %d: key '%s' repeats line %d", f->path, repeat->line, repeat->key,
+         repeated->line);
+    return -1;
 }
 
 static int parse_header(const hg_datafile *f, char *line, int line_no, const char *magic,
@@ -164,7 +221,7 @@ static int parse_lines(hg_datafile *f, char *text, long size, const char *magic,
              version);
         return -1;
     }
-    return 0;
+    return check_unique_keys(f, err, errlen);
 }
 
 hg_datafile *hg_datafile_load(const char *path, const char *magic, int version, char *err,

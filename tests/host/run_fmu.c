@@ -1,0 +1,605 @@
+/* A small FMI 2.0 co-simulation host in C, for the checks that should not depend on Python:
+ * it dlopens the FMU's shared library and runs one of
+ *
+ *   run_fmu FMU_DIR simulate [T]          simulate T s (default 0.1) with h = 1e-4; take a state
+ *                                         half-way, serialize it, restore it in this and in a
+ *                                         second instance; fmi2Reset; a fresh instance: every
+ *                                         continuation must be bit-identical
+ *   run_fmu FMU_DIR soak N [reload] [norss]
+ *                                         N instantiate / simulate 2 ms / serialize / free
+ *                                         cycles (reload: dlopen/dlclose every cycle); reports
+ *                                         RSS and open file descriptors, fails on growth (norss:
+ *                                         no RSS check, for ASan and valgrind, which hold memory)
+ *   run_fmu FMU_DIR threads N [T]         N instances with different parameters on N threads
+ *                                         (T s each, default 0.1),
+ *                                         twice, against each run alone: bit-identical; each
+ *                                         thread also resets and reruns its instance
+ *
+ * FMU_DIR is an unzipped FMU (modelDescription.xml, binaries/linux64/<id>.so, resources/).
+ * Errors the FMU logs are printed (everything with RUN_FMU_VERBOSE set) and fail the run.
+ * Exit status 0 when every check passes. Used by scripts/sanitize.sh (ASan, valgrind) and
+ * scripts/soak.sh. */
+#define _XOPEN_SOURCE 700 /* POSIX 2008 with realpath */
+#include <dirent.h>
+#include <dlfcn.h>
+#include <limits.h>
+#include <pthread.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "fmi2Functions.h"
+
+#define H 1e-4 /* communication step [s] */
+#define RSS_TOLERANCE_KIB 2048 /* soak: RSS growth allowed after the warm-up cycles */
+#define MAX_REALS 1024
+
+/* ------------------------------------------------------------------ the FMU's functions */
+
+typedef struct {
+    void *so;
+    fmi2InstantiateTYPE *instantiate;
+    fmi2FreeInstanceTYPE *free_instance;
+    fmi2SetupExperimentTYPE *setup;
+    fmi2EnterInitializationModeTYPE *enter;
+    fmi2ExitInitializationModeTYPE *exit_init;
+    fmi2TerminateTYPE *terminate;
+    fmi2ResetTYPE *reset;
+    fmi2GetRealTYPE *get_real;
+    fmi2SetRealTYPE *set_real;
+    fmi2SetIntegerTYPE *set_integer;
+    fmi2DoStepTYPE *do_step;
+    fmi2GetFMUstateTYPE *get_state;
+    fmi2SetFMUstateTYPE *set_state;
+    fmi2FreeFMUstateTYPE *free_state;
+    fmi2SerializedFMUstateSizeTYPE *state_size;
+    fmi2SerializeFMUstateTYPE *serialize;
+    fmi2DeSerializeFMUstateTYPE *deserialize;
+} fmu_lib;
+
+static void *symbol(void *so, const char *name)
+{
+    void *p = dlsym(so, name);
+    if (!p) fprintf(stderr, "run_fmu: %s is missing: %s\n", name, dlerror());
+    return p;
+}
+
+static int load(fmu_lib *f, const char *so_path)
+{
+    memset(f, 0, sizeof *f);
+    if (!(f->so = dlopen(so_path, RTLD_NOW | RTLD_LOCAL))) {
+        fprintf(stderr, "run_fmu: cannot load %s: %s\n", so_path, dlerror());
+        return -1;
+    }
+#define SYM(field, name) (*(void **)&f->field = symbol(f->so, name)) != NULL
+    if (SYM(instantiate, "fmi2Instantiate") && SYM(free_instance, "fmi2FreeInstance") &&
+        SYM(setup, "fmi2SetupExperiment") && SYM(enter, "fmi2EnterInitializationMode") &&
+        SYM(exit_init, "fmi2ExitInitializationMode") && SYM(terminate, "fmi2Terminate") &&
+        SYM(reset, "fmi2Reset") && SYM(get_real, "fmi2GetReal") &&
+        SYM(set_real, "fmi2SetReal") && SYM(set_integer, "fmi2SetInteger") &&
+        SYM(do_step, "fmi2DoStep") && SYM(get_state, "fmi2GetFMUstate") &&
+        SYM(set_state, "fmi2SetFMUstate") && SYM(free_state, "fmi2FreeFMUstate") &&
+        SYM(state_size, "fmi2SerializedFMUstateSize") &&
+        SYM(serialize, "fmi2SerializeFMUstate") && SYM(deserialize, "fmi2DeSerializeFMUstate"))
+        return 0;
+#undef SYM
+    dlclose(f->so);
+    return -1;
+}
+
+static void unload(fmu_lib *f)
+{
+    if (f->so) dlclose(f->so);
+    f->so = NULL;
+}
+
+/* ------------------------------------------------------------------ the model description */
+
+typedef struct {
+    char so_path[PATH_MAX];
+    char guid[128];
+    char *resource_uri;
+    fmi2ValueReference reals[MAX_REALS]; /* every Real variable */
+    size_t n_reals;
+    char *xml;
+} fmu_info;
+
+static char *read_file(const char *path)
+{
+    FILE *fp = fopen(path, "rb");
+    char *buf;
+    long n;
+    if (!fp) return NULL;
+    if (fseek(fp, 0, SEEK_END) || (n = ftell(fp)) < 0 || fseek(fp, 0, SEEK_SET) ||
+        !(buf = malloc((size_t)n + 1))) {
+        fclose(fp);
+        return NULL;
+    }
+    if (fread(buf, 1, (size_t)n, fp) != (size_t)n) {
+        free(buf);
+        buf = NULL;
+    } else {
+        buf[n] = '\0';
+    }
+    fclose(fp);
+    return buf;
+}
+
+/* The text of attribute attr after position p, copied into out. */
+static int attribute(const char *p, const char *attr, char *out, size_t len)
+{
+    char key[64];
+    const char *v, *end;
+    snprintf(key, sizeof key, " %s=\"", attr);
+    if (!(v = strstr(p, key))) return -1;
+    v += strlen(key);
+    if (!(end = strchr(v, '"')) || (size_t)(end - v) >= len) return -1;
+    memcpy(out, v, (size_t)(end - v));
+    out[end - v] = '\0';
+    return 0;
+}
+
+/* The value reference of the variable called name, or -1. */
+static long value_reference(const fmu_info *m, const char *name)
+{
+    char key[160], vr[32];
+    const char *p;
+    snprintf(key, sizeof key, "<ScalarVariable name=\"%s\"", name);
+    if (!(p = strstr(m->xml, key)) || attribute(p, "valueReference", vr, sizeof vr)) return -1;
+    return strtol(vr, NULL, 10);
+}
+
+/* file:// URI of a local path, percent-encoding all but unreserved characters and '/'. */
+static char *file_uri(const char *path)
+{
+    static const char hex[] = "0123456789ABCDEF";
+    char *uri = malloc(3 * strlen(path) + 8), *o;
+    if (!uri) return NULL;
+    strcpy(uri, "file://");
+    for (o = uri + 7; *path; path++) {
+        unsigned char ch = (unsigned char)*path;
+        if ((ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') ||
+            strchr("-._~/", ch)) {
+            *o++ = (char)ch;
+        } else {
+            *o++ = '%';
+            *o++ = hex[ch >> 4];
+            *o++ = hex[ch & 15];
+        }
+    }
+    *o = '\0';
+    return uri;
+}
+
+static int read_info(fmu_info *m, const char *dir)
+{
+    char path[PATH_MAX], id[128], real_dir[PATH_MAX];
+    const char *p;
+    memset(m, 0, sizeof *m);
+    snprintf(path, sizeof path, "%s/modelDescription.xml", dir);
+    if (!(m->xml = read_file(path)) || attribute(m->xml, "guid", m->guid, sizeof m->guid) ||
+        !(p = strstr(m->xml, "<CoSimulation")) ||
+        attribute(p, "modelIdentifier", id, sizeof id)) {
+        fprintf(stderr, "run_fmu: cannot read %s\n", path);
+        return -1;
+    }
+    snprintf(m->so_path, sizeof m->so_path, "%s/binaries/linux64/%s.so", dir, id);
+    snprintf(path, sizeof path, "%s/resources", dir);
+    if (!realpath(path, real_dir) || !(m->resource_uri = file_uri(real_dir))) {
+        fprintf(stderr, "run_fmu: no resources folder in %s\n", dir);
+        return -1;
+    }
+    for (p = m->xml; (p = strstr(p, "<ScalarVariable ")) != NULL; p++) {
+        const char *close = strstr(p, "</ScalarVariable>"), *real = strstr(p, "<Real");
+        char vr[32];
+        if (real && close && real < close && !attribute(p, "valueReference", vr, sizeof vr) &&
+            m->n_reals < MAX_REALS)
+            m->reals[m->n_reals++] = (fmi2ValueReference)strtoul(vr, NULL, 10);
+    }
+    return m->n_reals ? 0 : -1;
+}
+
+static void free_info(fmu_info *m)
+{
+    free(m->resource_uri);
+    free(m->xml);
+}
+
+/* ------------------------------------------------------------------ logging */
+
+typedef struct {
+    int errors;
+} log_env;
+
+static void logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status status,
+                   fmi2String category, fmi2String message, ...)
+{
+    char text[2048];
+    log_env *e = env;
+    va_list ap;
+    va_start(ap, message);
+    vsnprintf(text, sizeof text, message, ap); /* the message is a format string */
+    va_end(ap);
+    if (status >= fmi2Error && e) e->errors++;
+    if (status >= fmi2Error || getenv("RUN_FMU_VERBOSE"))
+        fprintf(stderr, "[%s] %s (%d): %s\n", name, category, (int)status, text);
+}
+
+/* ------------------------------------------------------------------ one simulation */
+
+typedef struct {
+    double T_s, w_set;
+    int gear_set, friction_model, load_mode; /* 0: leave the start value */
+} run_spec;
+
+typedef struct {
+    const fmu_lib *f;
+    const fmu_info *m;
+    fmi2CallbackFunctions cb;
+    log_env log;
+    fmi2Component c;
+} instance;
+
+static int fail(const char *what)
+{
+    fprintf(stderr, "run_fmu: FAILED: %s\n", what);
+    return -1;
+}
+
+static int open_instance(instance *in, const fmu_lib *f, const fmu_info *m, const char *name)
+{
+    memset(in, 0, sizeof *in);
+    in->f = f;
+    in->m = m;
+    in->cb.logger = logger;
+    in->cb.allocateMemory = calloc;
+    in->cb.freeMemory = free;
+    in->cb.componentEnvironment = &in->log;
+    in->c = f->instantiate(name, fmi2CoSimulation, m->guid, m->resource_uri, &in->cb, fmi2False,
+                           fmi2False);
+    return in->c ? 0 : fail("fmi2Instantiate");
+}
+
+static int set_int(instance *in, const char *name, int value)
+{
+    long vr = value_reference(in->m, name);
+    fmi2ValueReference r = (fmi2ValueReference)vr;
+    if (!value) return 0;
+    return vr >= 0 && in->f->set_integer(in->c, &r, 1, &value) == fmi2OK ? 0 : fail(name);
+}
+
+static int set_real(instance *in, const char *name, double value)
+{
+    long vr = value_reference(in->m, name);
+    fmi2ValueReference r = (fmi2ValueReference)vr;
+    return vr >= 0 && in->f->set_real(in->c, &r, 1, &value) == fmi2OK ? 0 : fail(name);
+}
+
+/* Parameters and start inputs of spec, then initialisation at t = 0. */
+static int init_instance(instance *in, const run_spec *s)
+{
+    if (in->f->setup(in->c, fmi2False, 0.0, 0.0, fmi2False, 0.0) != fmi2OK ||
+        set_int(in, "gear_set", s->gear_set) || set_int(in, "friction_model", s->friction_model) ||
+        set_int(in, "load_mode", s->load_mode) || set_real(in, "T_s", s->T_s) ||
+        set_real(in, "w_set", s->w_set) || in->f->enter(in->c) != fmi2OK ||
+        in->f->exit_init(in->c) != fmi2OK)
+        return fail("initialisation");
+    return 0;
+}
+
+/* n steps from t0, every Real variable after each step into out (n * n_reals values; NULL:
+ * read and drop them). */
+static int run_steps(instance *in, double t0, int n, double *out)
+{
+    double scratch[MAX_REALS];
+    int k;
+    for (k = 0; k < n; k++) {
+        if (in->f->do_step(in->c, t0 + k * H, H, fmi2True) != fmi2OK) return fail("fmi2DoStep");
+        if (in->f->get_real(in->c, in->m->reals, in->m->n_reals,
+                            out ? out + (size_t)k * in->m->n_reals : scratch) != fmi2OK)
+            return fail("fmi2GetReal");
+    }
+    return 0;
+}
+
+static void close_instance(instance *in)
+{
+    if (!in->c) return;
+    in->f->terminate(in->c);
+    in->f->free_instance(in->c);
+    in->c = NULL;
+}
+
+static int same(const double *a, const double *b, size_t n, const char *what)
+{
+    size_t i;
+    if (memcmp(a, b, n * sizeof *a) == 0) return 0;
+    for (i = 0; i < n && memcmp(&a[i], &b[i], sizeof *a) == 0; i++) continue;
+    fprintf(stderr, "run_fmu: value %zu differs: %.17g vs %.17g\n", i, a[i], b[i]);
+    return fail(what);
+}
+
+/* ------------------------------------------------------------------ simulate */
+
+/* Serializes state s of instance in into a new buffer; *size receives its length. */
+static char *serialize(instance *in, fmi2FMUstate s, size_t *size)
+{
+    char *blob;
+    if (in->f->state_size(in->c, s, size) != fmi2OK || !(blob = malloc(*size))) return NULL;
+    if (in->f->serialize(in->c, s, blob, *size) != fmi2OK) {
+        free(blob);
+        return NULL;
+    }
+    return blob;
+}
+
+/* A plain run, then with a state taken half-way (taking a state restarts the integrator, so
+ * the continuation is compared with continuations of the same state, not with the plain run). */
+static int simulate(const fmu_lib *f, const fmu_info *m, double t_end)
+{
+    run_spec spec = {150.0, 209.43951023931956, 2, 0, 0};
+    run_spec other = {60.0, 150.0, 3, 0, 1};
+    int n = (int)(t_end / H + 0.5), half = n / 2, rc = -1;
+    size_t nr = m->n_reals, size = 0, size2 = 0, rest = (size_t)(n - half) * nr;
+    double *plain = calloc((size_t)n * nr, sizeof *plain);
+    double *cont = calloc(rest, sizeof *cont), *again = calloc((size_t)n * nr, sizeof *again);
+    instance a, b;
+    fmi2FMUstate s = NULL, s2 = NULL;
+    char *blob = NULL, *blob2 = NULL;
+    memset(&b, 0, sizeof b);
+    if (!plain || !cont || !again || open_instance(&a, f, m, "a") || init_instance(&a, &spec) ||
+        run_steps(&a, 0.0, n, plain))
+        goto done;
+    /* fmi2Reset gives a fresh instance: the first half again, then take a state */
+    if (a.f->reset(a.c) != fmi2OK || init_instance(&a, &spec) || run_steps(&a, 0.0, half, again) ||
+        same(plain, again, (size_t)half * nr, "reset instance reproduces the run") ||
+        a.f->get_state(a.c, &s) != fmi2OK || !(blob = serialize(&a, s, &size)) ||
+        run_steps(&a, half * H, n - half, cont))
+        goto done;
+    /* the same instance, restored */
+    if (a.f->set_state(a.c, s) != fmi2OK || run_steps(&a, half * H, n - half, again) ||
+        same(cont, again, rest, "restored state continues bit-identically"))
+        goto done;
+    /* a second instance with other parameters, from the serialized state */
+    if (open_instance(&b, f, m, "b") || init_instance(&b, &other) ||
+        b.f->deserialize(b.c, blob, size, &s2) != fmi2OK || b.f->set_state(b.c, s2) != fmi2OK ||
+        run_steps(&b, half * H, n - half, again) ||
+        same(cont, again, rest, "deserialized state continues bit-identically in another "
+             "instance"))
+        goto done;
+    if (!(blob2 = serialize(&b, s2, &size2)) || size2 != size || memcmp(blob, blob2, size)) {
+        fail("a deserialized state serializes to the same bytes");
+        goto done;
+    }
+    /* a fresh instance, while the others still exist */
+    b.f->free_state(b.c, &s2);
+    close_instance(&b);
+    if (open_instance(&b, f, m, "fresh") || init_instance(&b, &spec) ||
+        run_steps(&b, 0.0, n, again) || same(plain, again, (size_t)n * nr, "a fresh instance "
+                                                 "reproduces the run"))
+        goto done;
+    rc = a.log.errors + b.log.errors ? fail("errors were logged") : 0;
+done:
+    if (s) a.f->free_state(a.c, &s);
+    if (s2 && b.c) b.f->free_state(b.c, &s2);
+    close_instance(&a);
+    close_instance(&b);
+    free(blob);
+    free(blob2);
+    free(plain);
+    free(cont);
+    free(again);
+    if (!rc) printf("run_fmu simulate: %d steps of %g s, %zu Real variables: reset, state "
+                    "restore, deserialization in a second instance and a fresh instance all "
+                    "bit-identical\n", n, H, nr);
+    return rc;
+}
+
+/* ------------------------------------------------------------------ soak */
+
+static long rss_kib(void)
+{
+    char line[256];
+    long kib = -1;
+    FILE *fp = fopen("/proc/self/status", "r");
+    if (!fp) return -1;
+    while (fgets(line, sizeof line, fp))
+        if (strncmp(line, "VmRSS:", 6) == 0) kib = strtol(line + 6, NULL, 10);
+    fclose(fp);
+    return kib;
+}
+
+static int open_fds(void)
+{
+    int n = 0;
+    DIR *d = opendir("/proc/self/fd");
+    struct dirent *e;
+    if (!d) return -1;
+    while ((e = readdir(d)) != NULL) n += e->d_name[0] != '.';
+    closedir(d);
+    return n - 1; /* the directory stream's own descriptor */
+}
+
+static int soak_cycle(const fmu_lib *f, const fmu_info *m, int cycle)
+{
+    run_spec spec = {80.0 + cycle % 50, 209.43951023931956, 1 + cycle % 3, 0, 0};
+    instance in;
+    fmi2FMUstate s = NULL, s2 = NULL;
+    size_t size = 0;
+    char *blob = NULL;
+    int rc = -1;
+    if (open_instance(&in, f, m, "soak") || init_instance(&in, &spec) ||
+        run_steps(&in, 0.0, 20, NULL) || f->get_state(in.c, &s) != fmi2OK ||
+        !(blob = serialize(&in, s, &size)) || f->deserialize(in.c, blob, size, &s2) != fmi2OK ||
+        f->set_state(in.c, s2) != fmi2OK)
+        goto done;
+    rc = in.log.errors ? fail("errors were logged") : 0;
+done:
+    if (s) f->free_state(in.c, &s);
+    if (s2) f->free_state(in.c, &s2);
+    free(blob);
+    close_instance(&in);
+    return rc;
+}
+
+static int soak(const fmu_info *m, int cycles, int reload, int check_rss)
+{
+    fmu_lib f;
+    long rss0 = 0, rss1, warm = cycles / 10 > 20 ? cycles / 10 : 20;
+    int fd0 = 0, fd1, k;
+    struct timespec t0, t1;
+    if (!reload && load(&f, m->so_path)) return -1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    if (warm >= cycles) warm = 0;
+    for (k = 0; k < cycles; k++) {
+        if (k == warm) {
+            rss0 = rss_kib();
+            fd0 = open_fds();
+        }
+        if (reload && load(&f, m->so_path)) return -1;
+        if (soak_cycle(&f, m, k)) {
+            fprintf(stderr, "run_fmu soak: cycle %d failed\n", k);
+            return -1;
+        }
+        if (reload) unload(&f);
+    }
+    if (!reload) unload(&f);
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    rss1 = rss_kib();
+    fd1 = open_fds();
+    printf("run_fmu soak: %d cycles%s in %.1f s; after %ld warm-up cycles RSS %ld KiB -> %ld KiB "
+           "(%+ld KiB%s), open file descriptors %d -> %d\n", cycles, reload ? " (dlopen/dlclose "
+           "each)" : "", (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec -
+           t0.tv_nsec), warm, rss0, rss1, rss1 - rss0, check_rss ? "" : ", not checked", fd0,
+           fd1);
+    if (fd1 != fd0) return fail("open file descriptors grew");
+    if (check_rss && rss1 - rss0 > RSS_TOLERANCE_KIB) return fail("RSS grew beyond tolerance");
+    return 0;
+}
+
+/* ------------------------------------------------------------------ threads */
+
+typedef struct {
+    const fmu_lib *f;
+    const fmu_info *m;
+    run_spec spec;
+    int n;
+    double *out, *again;
+    int rc;
+    pthread_barrier_t *start;
+} job;
+
+/* One instance: run, and (when again is given) reset, run again and compare. */
+static void *run_job(void *arg)
+{
+    job *j = arg;
+    instance in;
+    size_t len = (size_t)j->n * j->m->n_reals;
+    if (j->start) pthread_barrier_wait(j->start);
+    j->rc = -1;
+    if (open_instance(&in, j->f, j->m, "thread") || init_instance(&in, &j->spec) ||
+        run_steps(&in, 0.0, j->n, j->out))
+        goto done;
+    if (j->again && (in.f->reset(in.c) != fmi2OK || init_instance(&in, &j->spec) ||
+                     run_steps(&in, 0.0, j->n, j->again) ||
+                     same(j->out, j->again, len, "reset on a thread reproduces the run")))
+        goto done;
+    j->rc = in.log.errors ? fail("errors were logged") : 0;
+done:
+    close_instance(&in);
+    return NULL;
+}
+
+static int threads(const fmu_lib *f, const fmu_info *m, int n_threads, double t_end)
+{
+    int n = (int)(t_end / H + 0.5), k, round, rc = 0;
+    size_t len = (size_t)n * m->n_reals;
+    job *jobs = calloc((size_t)n_threads, sizeof *jobs);
+    double **alone = calloc((size_t)n_threads, sizeof *alone);
+    pthread_t *tid = calloc((size_t)n_threads, sizeof *tid);
+    pthread_barrier_t start;
+    if (!jobs || !alone || !tid || pthread_barrier_init(&start, NULL, (unsigned)n_threads))
+        return fail("out of memory");
+    for (k = 0; k < n_threads; k++) { /* each alone, one after the other */
+        run_spec s = {50.0 + 20.0 * k, 150.0 + 10.0 * k, 1 + k % 3, 1 + k % 2, 1 + (k / 3) % 2};
+        jobs[k].f = f;
+        jobs[k].m = m;
+        jobs[k].spec = s;
+        jobs[k].n = n;
+        if (!(alone[k] = calloc(len, sizeof **alone)) || !(jobs[k].out = calloc(len, sizeof
+            (double))) || !(jobs[k].again = calloc(len, sizeof(double))))
+            return fail("out of memory");
+        run_job(&jobs[k]);
+        memcpy(alone[k], jobs[k].out, len * sizeof(double));
+        rc |= jobs[k].rc;
+    }
+    for (round = 0; round < 2 && !rc; round++) { /* all at once */
+        for (k = 0; k < n_threads; k++) {
+            jobs[k].start = &start;
+            memset(jobs[k].out, 0, len * sizeof(double));
+            if (pthread_create(&tid[k], NULL, run_job, &jobs[k])) return fail("pthread_create");
+        }
+        for (k = 0; k < n_threads; k++) pthread_join(tid[k], NULL);
+        for (k = 0; k < n_threads; k++)
+            rc |= jobs[k].rc || same(alone[k], jobs[k].out, len, "a threaded run equals the "
+                                     "same run alone");
+    }
+    for (k = 1; k < n_threads && !rc; k++)
+        if (memcmp(alone[k], alone[0], len * sizeof(double)) == 0)
+            rc = fail("instances with different parameters gave the same results");
+    if (!rc)
+        printf("run_fmu threads: %d instances with different parameters, %d steps each, on %d "
+               "threads twice: bit-identical to each run alone; reset on every thread "
+               "reproduces its run\n", n_threads, n, n_threads);
+    pthread_barrier_destroy(&start);
+    for (k = 0; k < n_threads; k++) {
+        free(alone[k]);
+        free(jobs[k].out);
+        free(jobs[k].again);
+    }
+    free(alone);
+    free(jobs);
+    free(tid);
+    return rc;
+}
+
+/* ------------------------------------------------------------------ main */
+
+static int has_flag(int argc, char **argv, const char *flag)
+{
+    int k;
+    for (k = 4; k < argc; k++)
+        if (strcmp(argv[k], flag) == 0) return 1;
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    fmu_info m;
+    fmu_lib f;
+    int rc;
+    if (argc < 3) {
+        fprintf(stderr, "usage: run_fmu FMU_DIR simulate [T] | soak N [reload] [norss] | "
+                "threads N [T]\n");
+        return 2;
+    }
+    if (read_info(&m, argv[1])) return 1;
+    if (strcmp(argv[2], "soak") == 0) {
+        rc = soak(&m, argc > 3 ? atoi(argv[3]) : 2000, has_flag(argc, argv, "reload"),
+                  !has_flag(argc, argv, "norss"));
+    } else if (load(&f, m.so_path)) {
+        rc = -1;
+    } else {
+        if (strcmp(argv[2], "simulate") == 0)
+            rc = simulate(&f, &m, argc > 3 ? atof(argv[3]) : 0.1);
+        else if (strcmp(argv[2], "threads") == 0)
+            rc = threads(&f, &m, argc > 3 ? atoi(argv[3]) : 4, argc > 4 ? atof(argv[4]) : 0.1);
+        else
+            rc = fail("unknown mode");
+        unload(&f);
+    }
+    free_info(&m);
+    return rc ? 1 : 0;
+}
