@@ -111,7 +111,7 @@ START = {"comm_step_1us_at_t_1e4s": 1e4, "comm_step_1us_at_t_1e5s": 1e5}
 NEWTON = r"Newmark: Newton iteration failed to converge at t = .* \(step .*"
 EXPECTED_ERRORS = {
     # out of the declared ranges: refused at initialisation, naming the variable
-    ("speed_20000rpm_out_of_range", ".*", ".*"): r"w_p0",
+    ("speed_20000rpm_out_of_range", ".*", ".*"): r"w_p0|w_set",
     ("bath_250C_out_of_range", ".*", ".*"): r"T_bath",
     # a 1 us step at t = 1e5 s is below the resolution of the time (t + h rounds off > 1e-6 h)
     ("comm_step_1us_at_t_1e5s", ".*", ".*"): r"below the resolution of the time",
