@@ -35,6 +35,7 @@ import sys
 import time
 
 import pytest
+from hypoid.levels import LEVELS, SOLVERS
 
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parents[1]
@@ -42,16 +43,6 @@ RPM = math.pi / 30.0
 RATIO = 36.0 / 13.0  # gear set 1
 FULL = os.environ.get("HG_EXTREMES", "").lower() == "full"
 TIMEOUT = float(os.environ.get("HG_EXTREMES_TIMEOUT", "60"))
-
-LEVELS = {
-    "full": dict(mesh_model=2, friction_model=4, backlash_model=1),
-    "smoothed": dict(mesh_model=2, friction_model=4, backlash_model=2),
-    "isothermal": dict(mesh_model=2, friction_model=3, backlash_model=1),
-    "mean": dict(mesh_model=1, friction_model=4),
-    "rigid": dict(mesh_model=3, friction_model=4),
-    "map": dict(mesh_model=3, friction_model=5),
-}
-SOLVERS = {"bdf": dict(solver=1), "adams": dict(solver=2), "newmark": dict(solver=3)}
 
 
 def speed(rpm, torque=100.0, bath_c=40.0):
