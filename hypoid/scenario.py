@@ -12,24 +12,12 @@ import time
 
 import numpy as np
 
+from hypoid.sweep import parse_assignments, parse_scalar
+
 OUTPUTS = ["w_s", "w_p", "w_g", "w_w", "DTE", "W_t", "T_fp", "T_fg", "P_loss", "P_in", "eta",
            "eta_cycle", "T_w_out", "k_m", "contact", "n_impacts", "E_in", "E_out", "E_friction",
            "E_damping", "E_excitation", "E_stored", "pair[1].W", "pair[2].W", "pair[3].W",
            "pair[1].mu", "pair[1].h_c", "pair[1].T_c"]
-
-
-def parse_assignments(items):
-    """['T_s=200', 'friction_model=1', 'gear_set_file=x.txt'] -> start values."""
-    values = {}
-    for item in items:
-        name, sep, text = item.partition("=")
-        if not sep or not name:
-            raise ValueError(f"--set expects NAME=VALUE, got {item!r}")
-        try:
-            values[name] = int(text) if text.lstrip("-").isdigit() else float(text)
-        except ValueError:
-            values[name] = text
-    return values
 
 
 def simulate(fmu, stop_time, output_interval, start_values):
@@ -108,7 +96,7 @@ def main(argv):
                     help="start values, e.g. T_s=200 gear_set=2")
     args = ap.parse_args(argv)
     try:
-        start_values = parse_assignments(args.set)
+        start_values = {k: parse_scalar(v) for k, v in parse_assignments(args.set).items()}
     except ValueError as e:
         print(f"hypoid run: {e}", file=sys.stderr)
         return 2

@@ -35,7 +35,12 @@ def parse_values(text):
         a, b, s = (float(x) for x in text.split(":"))
         n = int(np.floor((b - a) / s + 1e-9)) + 1
         return [_num(a + i * s) for i in range(n)]
-    return [_num(x) if _is_num(x) else x for x in text.split(",")]
+    return [parse_scalar(x) for x in text.split(",")]
+
+
+def parse_scalar(text):
+    """A number where the text is one (int when integral), else the text."""
+    return _num(text) if _is_num(text) else text
 
 
 def _is_num(x):
@@ -201,7 +206,8 @@ def _parser():
     return ap
 
 
-def _assignments(items):
+def parse_assignments(items):
+    """['T_s=200', 'gear_set=2'] -> {'T_s': '200', 'gear_set': '2'} (texts)."""
     out = {}
     for item in items:
         name, sep, text = item.partition("=")
@@ -216,8 +222,8 @@ def main(argv):
     from fmpy import read_model_description
 
     try:
-        base = {k: (_num(v) if _is_num(v) else v) for k, v in _assignments(args.set).items()}
-        vary = {k: parse_values(v) for k, v in _assignments(args.vary).items()}
+        base = {k: parse_scalar(v) for k, v in parse_assignments(args.set).items()}
+        vary = {k: parse_values(v) for k, v in parse_assignments(args.vary).items()}
         md = read_model_description(args.fmu)
         settings = steady.Settings(samples_per_cycle=args.samples_per_cycle,
                                    window_cycles=args.window_cycles,

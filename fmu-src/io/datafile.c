@@ -7,7 +7,6 @@
 #include <fcntl.h>
 #include <limits.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -29,14 +28,6 @@ struct hg_datafile {
     size_t n, cap;
 };
 
-static void fail(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    if (!err || errlen == 0) return;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 static char *dup_str(const char *s, size_t len)
 {
@@ -56,17 +47,17 @@ static FILE *open_regular(const char *path, long *len, char *err, size_t errlen)
     FILE *fp;
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) {
-        fail(err, errlen, "cannot open data file '%s': %s", path, strerror(errno));
+        hg_errorf(err, errlen, "cannot open data file '%s': %s", path, strerror(errno));
         return NULL;
     }
     if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-        fail(err, errlen, "cannot read data file '%s': not a regular file (a directory, device "
+        hg_errorf(err, errlen, "cannot read data file '%s': not a regular file (a directory, device "
              "or pipe?)", path);
         close(fd);
         return NULL;
     }
     if (!(fp = fdopen(fd, "rb"))) {
-        fail(err, errlen, "cannot open data file '%s': %s", path, strerror(errno));
+        hg_errorf(err, errlen, "cannot open data file '%s': %s", path, strerror(errno));
         close(fd);
         return NULL;
     }
@@ -81,14 +72,14 @@ static char *read_whole_file(const char *path, long *size, char *err, size_t err
     FILE *fp = open_regular(path, &len, err, errlen);
     if (!fp) return NULL;
     if (len == 0) {
-        fail(err, errlen, "data file '%s' is empty", path);
+        hg_errorf(err, errlen, "data file '%s' is empty", path);
     } else if (len > MAX_FILE_BYTES) {
-        fail(err, errlen, "data file '%s' is %ld bytes, more than the limit of %ld", path, len,
+        hg_errorf(err, errlen, "data file '%s' is %ld bytes, more than the limit of %ld", path, len,
              MAX_FILE_BYTES);
     } else if ((buf = malloc((size_t)len + 1)) == NULL) {
-        fail(err, errlen, "out of memory reading '%s'", path);
+        hg_errorf(err, errlen, "out of memory reading '%s'", path);
     } else if (fread(buf, 1, (size_t)len, fp) != (size_t)len) {
-        fail(err, errlen, "short read on data file '%s'", path);
+        hg_errorf(err, errlen, "short read on data file '%s'", path);
         free(buf);
         buf = NULL;
     } else {
@@ -116,7 +107,7 @@ static int add_entry(hg_datafile *f, char *line, int line_no, char *err, size_t 
         size_t cap = f->cap ? 2 * f->cap : 64;
         entry *grown = realloc(f->entries, cap * sizeof *grown);
         if (!grown) {
-            fail(err, errlen, "out of memory reading '%s'", f->path);
+            hg_errorf(err, errlen, "out of memory reading '%s'", f->path);
             return -1;
         }
         f->entries = grown;
@@ -128,7 +119,7 @@ static int add_entry(hg_datafile *f, char *line, int line_no, char *err, size_t 
     e->line = line_no;
     e->used = 0;
     if (!e->key || !e->rest) {
-        fail(err, errlen, "out of memory reading '%s'", f->path);
+        hg_errorf(err, errlen, "out of memory reading '%s'", f->path);
         return -1;
     }
     return 0;
@@ -149,7 +140,7 @@ static int check_unique_keys(const hg_datafile *f, char *err, size_t errlen)
     size_t i;
     if (f->n < 2) return 0;
     if (!(sorted = malloc(f->n * sizeof *sorted))) {
-        fail(err, errlen, "out of memory reading '%s'", f->path);
+        hg_errorf(err, errlen, "out of memory reading '%s'", f->path);
         return -1;
     }
     for (i = 0; i < f->n; i++) sorted[i] = &f->entries[i];
@@ -164,7 +155,7 @@ static int check_unique_keys(const hg_datafile *f, char *err, size_t errlen)
     }
     free(sorted);
     if (!repeat) return 0;
-    fail(err, errlen, "%s, line %d: key '%s' repeats line %d", f->path, repeat->line, repeat->key,
+    hg_errorf(err, errlen, "%s, line %d: key '%s' repeats line %d", f->path, repeat->line, repeat->key,
          repeated->line);
     return -1;
 }
@@ -176,13 +167,13 @@ static int parse_header(const hg_datafile *f, char *line, int line_no, const cha
     char *end;
     long v;
     if (strncmp(line, magic, mlen) != 0 || !isspace((unsigned char)line[mlen])) {
-        fail(err, errlen, "%s, line %d: expected the header '%s %d', found '%.60s'", f->path,
+        hg_errorf(err, errlen, "%s, line %d: expected the header '%s %d', found '%.60s'", f->path,
              line_no, magic, version, line);
         return -1;
     }
     v = strtol(line + mlen, &end, 10);
     if (*trim(end) != '\0' || v != version) {
-        fail(err, errlen, "%s, line %d: unsupported %s format version '%s' (this FMU reads %d)",
+        hg_errorf(err, errlen, "%s, line %d: unsupported %s format version '%s' (this FMU reads %d)",
              f->path, line_no, magic, trim(line + mlen), version);
         return -1;
     }
@@ -195,7 +186,7 @@ static int parse_lines(hg_datafile *f, char *text, long size, const char *magic,
     int line_no = 0, have_header = 0;
     char *p = text;
     if ((long)strlen(text) != size) {
-        fail(err, errlen, "%s: contains a NUL byte (binary file?)", f->path);
+        hg_errorf(err, errlen, "%s: contains a NUL byte (binary file?)", f->path);
         return -1;
     }
     while (*p) {
@@ -217,7 +208,7 @@ static int parse_lines(hg_datafile *f, char *text, long size, const char *magic,
         p = nl + 1;
     }
     if (!have_header) {
-        fail(err, errlen, "%s: no header line '%s %d' (only comments or blanks)", f->path, magic,
+        hg_errorf(err, errlen, "%s: no header line '%s %d' (only comments or blanks)", f->path, magic,
              version);
         return -1;
     }
@@ -231,14 +222,14 @@ hg_datafile *hg_datafile_load(const char *path, const char *magic, int version, 
     char *text;
     long size = 0;
     if (!path || !*path) {
-        fail(err, errlen, "data file path is empty");
+        hg_errorf(err, errlen, "data file path is empty");
         return NULL;
     }
     text = read_whole_file(path, &size, err, errlen);
     if (!text) return NULL;
     f = calloc(1, sizeof *f);
     if (!f || !(f->path = dup_str(path, strlen(path)))) {
-        fail(err, errlen, "out of memory reading '%s'", path);
+        hg_errorf(err, errlen, "out of memory reading '%s'", path);
         free(f);
         free(text);
         return NULL;
@@ -297,7 +288,7 @@ int hg_datafile_numbers(const hg_datafile *f, const char *key, size_t n_min, siz
     const char *s;
     size_t count = 0;
     if (!e) {
-        fail(err, errlen, "%s: missing key '%s'", f->path, key);
+        hg_errorf(err, errlen, "%s: missing key '%s'", f->path, key);
         return -1;
     }
     e->used = 1;
@@ -307,7 +298,7 @@ int hg_datafile_numbers(const hg_datafile *f, const char *key, size_t n_min, siz
         while (*s && isspace((unsigned char)*s)) s++;
         if (!*s) break;
         if (count == n_max) {
-            fail(err, errlen, "%s, line %d: key '%s' takes at most %zu value(s)", f->path, e->line,
+            hg_errorf(err, errlen, "%s, line %d: key '%s' takes at most %zu value(s)", f->path, e->line,
                  key, n_max);
             return -1;
         }
@@ -316,7 +307,7 @@ int hg_datafile_numbers(const hg_datafile *f, const char *key, size_t n_min, siz
         if (end == s || (*end && !isspace((unsigned char)*end)) || !isfinite(v) ||
             errno == ERANGE) {
             size_t tlen = strcspn(s, " \t");
-            fail(err, errlen, "%s, line %d: key '%s': '%.*s' is not a finite number", f->path,
+            hg_errorf(err, errlen, "%s, line %d: key '%s': '%.*s' is not a finite number", f->path,
                  e->line, key, (int)(tlen > 40 ? 40 : tlen), s);
             return -1;
         }
@@ -324,7 +315,7 @@ int hg_datafile_numbers(const hg_datafile *f, const char *key, size_t n_min, siz
         s = end;
     }
     if (count < n_min) {
-        fail(err, errlen, "%s, line %d: key '%s' needs at least %zu value(s), found %zu", f->path,
+        hg_errorf(err, errlen, "%s, line %d: key '%s' needs at least %zu value(s), found %zu", f->path,
              e->line, key, n_min, count);
         return -1;
     }
@@ -338,7 +329,7 @@ int hg_datafile_number(const hg_datafile *f, const char *key, double lo, double 
     double v;
     if (hg_datafile_numbers(f, key, 1, 1, &v, NULL, err, errlen)) return -1;
     if (!(v >= lo && v <= hi)) {
-        fail(err, errlen, "%s, line %d: key '%s' = %g is outside [%g, %g]", f->path,
+        hg_errorf(err, errlen, "%s, line %d: key '%s' = %g is outside [%g, %g]", f->path,
              find(f, key)->line, key, v, lo, hi);
         return -1;
     }
@@ -358,7 +349,7 @@ int hg_datafile_text(const hg_datafile *f, const char *key, char *buf, size_t bu
 {
     entry *e = find(f, key);
     if (!e) {
-        fail(err, errlen, "%s: missing key '%s'", f->path, key);
+        hg_errorf(err, errlen, "%s: missing key '%s'", f->path, key);
         return -1;
     }
     e->used = 1;
@@ -371,7 +362,7 @@ int hg_datafile_check_all_used(const hg_datafile *f, char *err, size_t errlen)
     size_t i;
     for (i = 0; i < f->n; i++) {
         if (!f->entries[i].used) {
-            fail(err, errlen, "%s, line %d: unknown key '%s'", f->path, f->entries[i].line,
+            hg_errorf(err, errlen, "%s, line %d: unknown key '%s'", f->path, f->entries[i].line,
                  f->entries[i].key);
             return -1;
         }

@@ -14,7 +14,7 @@
 
 #include <stddef.h>
 
-#define HG_ERRLEN 512 /* size of every error-message buffer passed around the FMU */
+#include "io/errmsg.h"
 
 typedef struct hg_datafile hg_datafile;
 

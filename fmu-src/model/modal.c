@@ -2,22 +2,15 @@
 #include "model/modal.h"
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
+
+#include "io/errmsg.h"
 
 #define N HG_MODAL_NDOF
 #define NC 3 /* number of dampers / elastic modes */
 
 static const double TWO_PI = 6.283185307179586476925286766559;
 
-static void fail(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    if (!err || errlen == 0) return;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 /* ---------------------------------------------------------------------------------------------
  * Input checks
@@ -26,14 +19,14 @@ static void fail(char *err, size_t errlen, const char *fmt, ...)
 static int check_positive(const char *name, double v, const char *unit, char *err, size_t errlen)
 {
     if (isfinite(v) && v > 0.0) return 0;
-    fail(err, errlen, "modal analysis: %s = %g %s must be finite and > 0", name, v, unit);
+    hg_errorf(err, errlen, "modal analysis: %s = %g %s must be finite and > 0", name, v, unit);
     return HG_MODAL_EINPUT;
 }
 
 static int validate_input(const hg_modal_input *in, char *err, size_t errlen)
 {
     if (!in) {
-        fail(err, errlen, "modal analysis: no input given");
+        hg_errorf(err, errlen, "modal analysis: no input given");
         return HG_MODAL_EINPUT;
     }
     if (check_positive("I_s", in->I_s, "kg m^2", err, errlen) ||
@@ -156,7 +149,7 @@ int hg_modal_analysis(const hg_modal_input *in, hg_modes *out, char *err, size_t
     int order[N], i, j, rc;
     if ((rc = validate_input(in, err, errlen)) != HG_MODAL_OK) return rc;
     if (!out) {
-        fail(err, errlen, "modal analysis: no output given");
+        hg_errorf(err, errlen, "modal analysis: no output given");
         return HG_MODAL_EINPUT;
     }
     build_K(in, K);
@@ -167,7 +160,7 @@ int hg_modal_analysis(const hg_modal_input *in, hg_modes *out, char *err, size_t
     for (i = 0; i < N; i++) /* M^-1/2 K M^-1/2 [1/s^2] */
         for (j = 0; j < N; j++) A[i][j] = K[i][j] / (sqrt_m[i] * sqrt_m[j]);
     if (jacobi_eigen(A, V, lam) != HG_MODAL_OK) {
-        fail(err, errlen, "modal analysis: Jacobi eigen-solver did not converge");
+        hg_errorf(err, errlen, "modal analysis: Jacobi eigen-solver did not converge");
         return HG_MODAL_ENUM;
     }
     sort_order(lam, order);
@@ -176,7 +169,7 @@ int hg_modal_analysis(const hg_modal_input *in, hg_modes *out, char *err, size_t
         double w2 = lam[order[i]]; /* omega^2 [1/s^2] */
         if (fabs(w2) <= HG_MODAL_RIGID_TOL * lam_max) w2 = 0.0;
         if (w2 < 0.0) {
-            fail(err, errlen, "modal analysis: negative eigenvalue omega^2 = %g 1/s^2", w2);
+            hg_errorf(err, errlen, "modal analysis: negative eigenvalue omega^2 = %g 1/s^2", w2);
             return HG_MODAL_ENUM;
         }
         out->omega[i] = sqrt(w2);
@@ -335,13 +328,13 @@ static int validate_zeta(const double zeta[3], double *zeta_max, char *err, size
 {
     int i;
     if (!zeta) {
-        fail(err, errlen, "modal dampers: no damping ratios given");
+        hg_errorf(err, errlen, "modal dampers: no damping ratios given");
         return HG_MODAL_EINPUT;
     }
     *zeta_max = 0.0;
     for (i = 0; i < NC; i++) {
         if (!(isfinite(zeta[i]) && zeta[i] >= 0.0 && zeta[i] <= 1.0)) {
-            fail(err, errlen, "modal dampers: zeta of mode %d = %g must be finite and in [0, 1]",
+            hg_errorf(err, errlen, "modal dampers: zeta of mode %d = %g must be finite and in [0, 1]",
                  i + 2, zeta[i]);
             return HG_MODAL_EINPUT;
         }
@@ -388,11 +381,11 @@ int hg_modal_dampers(const hg_modal_input *in, const double zeta[3], hg_dampers 
     if ((rc = hg_modal_analysis(in, &m, err, errlen)) != HG_MODAL_OK) return rc;
     if ((rc = validate_zeta(zeta, &zeta_max, err, errlen)) != HG_MODAL_OK) return rc;
     if (!out) {
-        fail(err, errlen, "modal dampers: no output given");
+        hg_errorf(err, errlen, "modal dampers: no output given");
         return HG_MODAL_EINPUT;
     }
     if (m.omega[1] <= 0.0) {
-        fail(err, errlen, "modal dampers: more than one rigid-body mode");
+        hg_errorf(err, errlen, "modal dampers: more than one rigid-body mode");
         return HG_MODAL_ENUM;
     }
     zeta_per_unit_damper(in, &m, a);
