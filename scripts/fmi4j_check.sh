@@ -12,13 +12,7 @@ cd "$(dirname "$0")/.."
 need_apt=()
 command -v javac >/dev/null || need_apt+=(default-jdk-headless)
 command -v mvn >/dev/null || need_apt+=(maven)
-if [ ${#need_apt[@]} -gt 0 ]; then
-  sudo_cmd=""
-  [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
-  echo "fmi4j_check: installing ${need_apt[*]} with apt-get"
-  $sudo_cmd apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq "${need_apt[@]}" >/dev/null
-fi
+scripts/ensure_apt.sh "${need_apt[@]}"
 if [ ! -f build/HypoidGearPair.fmu ] || [ ! -f build/LongitudinalVehicle.fmu ]; then
   scripts/setup.sh
 fi

@@ -12,13 +12,7 @@ command -v cmake >/dev/null || need_apt+=(cmake)
 [ -f /usr/lib/x86_64-linux-gnu/libsundials_cvode.a ] || need_apt+=(libsundials-dev)
 python3 -c 'import venv, ensurepip' 2>/dev/null || need_apt+=(python3-venv)
 python3 -c 'import sys; sys.exit(sys.version_info < (3, 11))' 2>/dev/null || need_apt+=(python3)
-if [ ${#need_apt[@]} -gt 0 ]; then
-  sudo_cmd=""
-  [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
-  echo "setup: installing ${need_apt[*]} with apt-get"
-  $sudo_cmd apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq "${need_apt[@]}" >/dev/null
-fi
+scripts/ensure_apt.sh "${need_apt[@]}"
 
 if [ ! -x .venv/bin/python ] || ! .venv/bin/python -c 'import hypoid, fmpy, pytest' 2>/dev/null \
    || [ pyproject.toml -nt .venv/.installed ]; then
