@@ -79,3 +79,35 @@ def test_readme_variable_table_is_current():
     """README's table is generated from variables.toml, the source of the XML and the C table."""
     subprocess.run(["python3", str(ROOT / "modelDescription" / "generate.py"), "--readme",
                     str(ROOT / "README.md"), "--check"], check=True)
+
+
+def test_python_variable_table_is_current():
+    """hypoid/variables.py is generated from variables.toml like the README table."""
+    subprocess.run(["python3", str(ROOT / "modelDescription" / "generate.py"), "--python",
+                    str(ROOT / "hypoid" / "variables.py"), "--check"], check=True)
+
+
+def test_python_variable_table_matches_the_model_description(model_description):
+    """Names, value references, causalities, units and enumeration codes of hypoid.variables
+    agree with the built FMU's modelDescription.xml, read by fmpy."""
+    from hypoid.variables import ENUMERATIONS, GUID, VARIABLES
+
+    assert model_description.guid == GUID
+    assert [v.name for v in model_description.modelVariables] == list(VARIABLES)
+    for v in model_description.modelVariables:
+        mine = VARIABLES[v.name]
+        assert (mine.vr, mine.causality, mine.type) == (v.valueReference, v.causality, v.type)
+        assert (mine.unit or None) == (v.unit or None), v.name
+        if v.type == "Enumeration":
+            items = {i.name: int(i.value) for i in v.declaredType.items}
+            assert ENUMERATIONS[mine.enumeration] == items
+            assert int(v.start) == mine.start
+
+
+def test_readme_shows_enumeration_codes():
+    """Issue 13 item 2: hosts such as fmpy set enumerations by their integer codes, so the
+    README table gives each item's code (load_mode: 1 = torque, 2 = speed)."""
+    text = (ROOT / "README.md").read_text()
+    row = next(line for line in text.splitlines() if line.startswith("| `friction_model` |"))
+    assert "1 = none" in row and "4 = ehl_thermal" in row and "5 = map" in row
+    assert "`4` (ehl_thermal)" in row
