@@ -11,7 +11,16 @@ The fit follows physics.md 4.1:
    c in (-273.15 degC, 40 degC); then b = (L1 - L2)/(x1 - x2) and a = exp(L1 - b x1).
 
 The pressure-viscosity data (alpha* at three temperatures), the Havriliak-Negami parameters and
-the thermal properties are copied through with range checks. `--builtin` regenerates the two
+the thermal properties are copied through with range checks. A data sheet rarely gives them; each
+one left out is estimated (`estimate`, docs/data-files.md "Estimates for what a data sheet lacks")
+and marked ESTIMATED in the file with its source:
+
+- alpha*: the pressure-viscosity correlation of ISO/TR 15144-1:2014, eqs. (8)-(10), from the
+  dynamic viscosity at 38 degC and the base oil (mineral or synthetic = PAO), taken as alpha*.
+- Havriliak-Negami lambda, alpha, beta: the mean of the two 75W-90 gear oils the paper measured
+  (Paouris et al. 2016, Table 2).
+- k_f: mineral oils by Cragoe's correlation (US Bureau of Standards Misc. Publ. 97, 1929) at
+  60 degC; synthetic oils the paper's Table 2 value for OS265962. `--builtin` regenerates the two
 lubricants of the paper (Table 2) in resources/lubricants/. The file format is documented in
 docs/data-files.md.
 """
@@ -43,6 +52,83 @@ BUILTIN_NOTES = {
         "Set the FMU's k_f override to 0.80 to reproduce the paper as printed.",
     ],
 }
+
+
+# ---------------------------------------------------------------- estimates for a bare data sheet
+BASE_OILS = ("mineral", "synthetic")
+# ISO/TR 15144-1:2014 eqs. (9) (mineral) and (10) (polyalphaolefin): alpha_38 = A eta_38^B with
+# alpha in 1/Pa and eta_38 [Pa s] the dynamic viscosity at 38 degC (311 K)
+ISO15144_ALPHA38 = {"mineral": (2.657e-8, 0.1348), "synthetic": (1.466e-8, 0.0507)}
+ISO15144_T_REF = 311.0  # K, eq. (8)
+ISO15144_T_SLOPE = 516.0  # K, eq. (8)
+# the mean of the paper's two 75W-90 gear oils (Table 2: 7.9e-8 / 8.0e-8 s, 0.70 / 0.97, 1 / 1)
+HN_TYPICAL = {"hn_lambda": 7.95e-8, "hn_alpha": 0.835, "hn_beta": 1.0}
+CRAGOE_K = 0.1172  # W/(m K): Cragoe, k = 0.1172 (1 - 5.4e-4 T [degC]) / SG15 (mineral oils)
+CRAGOE_SLOPE = 5.4e-4  # 1/K
+CRAGOE_T = 60.0  # degC, the inlet temperature of the paper's 40 degC bath
+RHO_WATER_15 = 999.1  # kg/m^3, water at 15 degC (the reference of the specific gravity)
+K_F_SYNTHETIC = 0.18  # W/(m K), the paper's Table 2 for OS265962 (a synthetic 75W-90)
+SOURCES = {
+    "alpha_star": "ISO/TR 15144-1:2014 eqs. (8)-(10), {base} base oil",
+    "hn": "typical 75W-90 gear oil: mean of the paper's Table 2 oils",
+    "k_f": {"mineral": "Cragoe (1929) at 60 degC from rho15, mineral oil",
+            "synthetic": "the paper's Table 2 value for a synthetic 75W-90"},
+}
+
+
+def iso15144_alpha(eta_38, t_k, base_oil):
+    """Pressure-viscosity coefficient [1/Pa] at t_k [K] from eta_38 [Pa s] (ISO/TR 15144-1
+    eqs. (8)-(10))."""
+    coeff, power = ISO15144_ALPHA38[base_oil]
+    return coeff * eta_38 ** power * (1.0 + ISO15144_T_SLOPE * (1.0 / t_k - 1.0 / ISO15144_T_REF))
+
+
+def estimate_alpha_star(kv40, kv100, rho15, base_oil, temps_c):
+    """alpha* [1/GPa] at temps_c [degC], taken as the ISO/TR 15144-1 coefficient."""
+    wa, wb = walther_fit(kv40, kv100)
+    eta_38 = walther_nu(wa, wb, 38.0) * 1e-6 * density(rho15, 38.0)
+    return tuple(1e9 * iso15144_alpha(eta_38, t + C0, base_oil) for t in temps_c)
+
+
+def estimate_k_f(rho15, base_oil):
+    """Thermal conductivity [W/(m K)]: Cragoe at 60 degC (mineral), the paper's (synthetic)."""
+    if base_oil == "synthetic":
+        return K_F_SYNTHETIC
+    return CRAGOE_K * (1.0 - CRAGOE_SLOPE * CRAGOE_T) / (rho15 / RHO_WATER_15)
+
+
+def estimate(sheet, base_oil="mineral"):
+    """Fills the values a data sheet lacks (None or absent) with the estimates above.
+
+    `sheet` holds build()'s keyword arguments; returns (complete arguments, the estimated file
+    keys with their sources)."""
+    if base_oil not in BASE_OILS:
+        raise LubricantError(f"base oil {base_oil!r} is not one of " + ", ".join(BASE_OILS))
+    args = dict(sheet)
+    args.setdefault("alpha_temps", (40.0, 100.0, 140.0))
+    fit_vogel(args.get("kv40"), args.get("kv100"), args.get("rho15"))  # checks the data sheet
+    marked = {}
+    if args.get("alpha_star") is None:
+        args["alpha_star"] = tuple(_sig4(a) for a in estimate_alpha_star(
+            args["kv40"], args["kv100"], args["rho15"], base_oil, args["alpha_temps"]))
+        for i in range(3):
+            marked[f"alpha_star_{i + 1}"] = SOURCES["alpha_star"].format(base=base_oil)
+    for key, value in HN_TYPICAL.items():
+        if args.get(key) is None:
+            args[key] = value
+            marked[key] = SOURCES["hn"]
+    if args.get("k_f") is None:
+        args["k_f"] = _sig4(estimate_k_f(args["rho15"], base_oil))
+        marked["k_f"] = SOURCES["k_f"][base_oil]
+    if args.get("c_p") is None:
+        args["c_p"] = 2090.0
+        marked["c_p"] = "the paper's Table 2 (both oils)"
+    return args, marked
+
+
+def _sig4(x):
+    """An estimate to 4 significant digits (more would claim a precision it lacks)."""
+    return float(f"{x:.4g}")
 
 
 class LubricantError(ValueError):
@@ -194,8 +280,10 @@ def build(name, kv40, kv100, rho15, alpha_star, alpha_temps, hn_lambda, hn_alpha
     }
 
 
-def render(v, notes=()):
-    """The text of a "hypoid-lubricant 1" file."""
+def render(v, notes=(), marked=None):
+    """The text of a "hypoid-lubricant 1" file; `marked` maps the keys that were estimated to
+    their sources (each such line says ESTIMATED)."""
+    marked = marked or {}
     g = lambda x: repr(float(x))  # noqa: E731  (shortest round-trip representation)
     wa, wb = v["walther"]
     lines = [
@@ -211,6 +299,13 @@ def render(v, notes=()):
             for t in (20, 40, 60, 100, 140)),
     ]
     lines += [f"# {n}" for n in notes]
+    if marked:
+        lines.append("# ESTIMATED (not on the data sheet; replace them with measured values):")
+        by_source = {}
+        for key, src in marked.items():
+            by_source.setdefault(src, []).append(key)
+        lines += [f"#   {', '.join(keys)}: {src}" for src, keys in by_source.items()]
+        lines.append("#   how: docs/data-files.md, 'Estimates for what a data sheet lacks'")
     lines += [
         "# Units: SI (Pa s, K, 1/Pa, s, W/(m K), J/(kg K), kg/m^3). Format: docs/data-files.md.",
         MAGIC,
@@ -230,7 +325,14 @@ def render(v, notes=()):
         f"c_p {g(v['c_p'])}    # J/(kg K)",
         f"rho_15 {g(v['rho_15'])}    # kg/m^3",
     ]
-    return "\n".join(lines) + "\n"
+    return "\n".join(_mark(ln, marked) for ln in lines) + "\n"
+
+
+def _mark(line, marked):
+    key = line.split(" ", 1)[0]
+    if key not in marked or line.startswith("#"):
+        return line
+    return line + (", " if "#" in line else "    # ") + "ESTIMATED"
 
 
 def builtin_dir():
@@ -265,17 +367,23 @@ def _parser():
     p.add_argument("--kv40", type=float, help="kinematic viscosity at 40 degC [mm^2/s]")
     p.add_argument("--kv100", type=float, help="kinematic viscosity at 100 degC [mm^2/s]")
     p.add_argument("--rho15", type=float, help="density at 15 degC [kg/m^3]")
+    p.add_argument("--base-oil", choices=BASE_OILS, default="mineral",
+                   help="base oil, for the estimates of alpha* and k_f when they are not given "
+                        "(synthetic = PAO; default mineral)")
     p.add_argument("--alpha-star", type=float, nargs=3, metavar=("A1", "A2", "A3"),
                    help="reciprocal asymptotic isoviscous pressure coefficient at the three "
-                        "temperatures [1/GPa]")
+                        "temperatures [1/GPa] (default: estimated, ISO/TR 15144-1)")
     p.add_argument("--alpha-temps", type=float, nargs=3, metavar=("T1", "T2", "T3"),
                    default=(40.0, 100.0, 140.0),
                    help="temperatures of --alpha-star [degC] (default 40 100 140)")
-    p.add_argument("--hn-lambda", type=float, help="Havriliak-Negami relaxation time [s]")
-    p.add_argument("--hn-alpha", type=float, help="Havriliak-Negami alpha [-]")
-    p.add_argument("--hn-beta", type=float, default=1.0, help="Havriliak-Negami beta [-] (1)")
-    p.add_argument("--k-f", type=float, help="thermal conductivity [W/(m K)]")
-    p.add_argument("--c-p", type=float, default=2090.0, help="specific heat [J/(kg K)] (2090)")
+    p.add_argument("--hn-lambda", type=float,
+                   help="Havriliak-Negami relaxation time [s] (default: typical gear oil)")
+    p.add_argument("--hn-alpha", type=float,
+                   help="Havriliak-Negami alpha [-] (default: typical gear oil)")
+    p.add_argument("--hn-beta", type=float, help="Havriliak-Negami beta [-] (default 1)")
+    p.add_argument("--k-f", type=float,
+                   help="thermal conductivity [W/(m K)] (default: estimated for the base oil)")
+    p.add_argument("--c-p", type=float, help="specific heat [J/(kg K)] (default 2090)")
     return p
 
 
@@ -293,19 +401,20 @@ def main(argv=None):
             return 0
         missing = [opt for opt, val in (("--name", args.name), ("--kv40", args.kv40),
                                         ("--kv100", args.kv100), ("--rho15", args.rho15),
-                                        ("--alpha-star", args.alpha_star),
-                                        ("--hn-lambda", args.hn_lambda),
-                                        ("--hn-alpha", args.hn_alpha), ("--k-f", args.k_f),
                                         ("-o/--output", args.output)) if val is None]
         if missing:
             raise LubricantError("missing " + ", ".join(missing) + " (or use --builtin)")
-        values = build(args.name, args.kv40, args.kv100, args.rho15, tuple(args.alpha_star),
-                       tuple(args.alpha_temps), args.hn_lambda, args.hn_alpha, args.hn_beta,
-                       args.k_f, args.c_p)
+        sheet = dict(name=args.name, kv40=args.kv40, kv100=args.kv100, rho15=args.rho15,
+                     alpha_star=args.alpha_star, alpha_temps=tuple(args.alpha_temps),
+                     hn_lambda=args.hn_lambda, hn_alpha=args.hn_alpha, hn_beta=args.hn_beta,
+                     k_f=args.k_f, c_p=args.c_p)
+        full, marked = estimate(sheet, args.base_oil)
+        values = build(**full)
         with open(args.output, "w") as fh:
-            fh.write(render(values))
+            fh.write(render(values, marked=marked))
         print(f"wrote {args.output}: Vogel a = {values['vogel_a']:.4e} Pa s, "
-              f"b = {values['vogel_b']:.1f} K, c = {values['vogel_c_degc']:.2f} degC")
+              f"b = {values['vogel_b']:.1f} K, c = {values['vogel_c_degc']:.2f} degC"
+              + (f"; estimated: {', '.join(marked)}" if marked else ""))
         return 0
     except (LubricantError, OSError) as exc:
         print(f"hypoid lubricant: error: {exc}", file=sys.stderr)
