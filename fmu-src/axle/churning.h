@@ -1,0 +1,41 @@
+/* Churning of a gear dipping into an oil sump: Changenet and Velex's dimensionless drag torque.
+ *
+ * Sources (the formulas and constants):
+ *   C. Changenet, P. Velex, "A model for the prediction of churning losses in geared
+ *   transmissions - preliminary results", ASME J. Mech. Des. 129(1), 128-133, 2007 (eq. for
+ *   C_m at low and moderate speeds);
+ *   C. Changenet, P. Velex, "Housing influence on churning losses in geared transmissions",
+ *   ASME J. Mech. Des. 130(6), 062603, 2008 (the critical Reynolds number and the high-speed
+ *   C_m that depends on the face width).
+ * Everything in SI units; the model layer supplies the oil's density and viscosity at T_oil. */
+#ifndef HG_AXLE_CHURNING_H
+#define HG_AXLE_CHURNING_H
+
+/* Geometry of the dipping gear, idealised as a disc of the pitch radius R_p: */
+typedef struct {
+    double R_p; /* pitch radius [m] (the ring gear's outer pitch radius) */
+    double b;   /* face width [m] */
+    double h;   /* immersion depth: oil level above the lowest point of the pitch circle [m], 0 < h <= R_p */
+    double V_0; /* oil volume of the sump [m^3] */
+} hg_churn_geom;
+
+/* Wetted area of a disc of radius R_p and width b immersed to the depth h (both faces and the
+ * periphery): S_m = R_p^2 (2 theta - sin 2 theta) + 2 R_p b theta, theta = acos(1 - h/R_p). */
+double hg_churn_submerged_area(double R_p, double b, double h);
+
+/* Dimensionless churning torque C_m.
+ *   Re_c = omega R_p h / nu < 6000 (Changenet & Velex 2007):
+ *     C_m = 1.366 (h/D_p)^0.45 (V_0/D_p^3)^0.1 Fr^-0.6 Re^-0.21
+ *   Re_c > 9000 (Changenet & Velex 2008):
+ *     C_m = 3.644 (h/D_p)^0.1 (V_0/D_p^3)^-0.35 Fr^-0.88 (b/D_p)^0.85
+ * with D_p = 2 R_p, Fr = omega^2 R_p / g, Re = omega R_p b / nu. Between 6000 and 9000 (the
+ * transition, for which the papers give no formula) ln C_m is blended with a smoothstep in
+ * ln Re_c, so that the loss is continuous with a continuous slope (our choice, docs/axle.md).
+ * omega [rad/s] > 0, nu [m^2/s]. */
+double hg_churn_cm(const hg_churn_geom *g, double nu, double omega);
+
+/* Churning torque magnitude C_ch = 1/2 rho omega^2 S_m R_p^3 C_m [N m] (Changenet & Velex 2007),
+ * rho [kg/m^3], nu [m^2/s], omega [rad/s] of either sign (0 gives 0). The loss is C_ch |omega|. */
+double hg_churn_torque(const hg_churn_geom *g, double rho, double nu, double omega);
+
+#endif

@@ -1,0 +1,31 @@
+/* Housing heat to the air (sump.h for the sources). */
+#include "axle/sump.h"
+
+#include <math.h>
+
+#define K_AIR 0.0263    /* W/(m K), air at 300 K (Incropera Table A.4) */
+#define NU_AIR 15.89e-6 /* m^2/s */
+#define PR_AIR 0.707
+#define SIGMA_SB 5.670374419e-8 /* Stefan-Boltzmann constant [W/(m^2 K^4)] */
+
+double hg_h_natural(double dT, double L)
+{
+    return 1.42 * pow(fabs(dT) / L, 0.25);
+}
+
+double hg_h_forced(double v_air, double L)
+{
+    double Re = fabs(v_air) * L / NU_AIR, pr3 = cbrt(PR_AIR);
+    double Nu_lam = 0.664 * sqrt(Re) * pr3;
+    double Nu_mix = (0.037 * pow(Re, 0.8) - 871.0) * pr3;
+    return fmax(Nu_lam, Nu_mix) * K_AIR / L;
+}
+
+double hg_housing_heat(const hg_housing *h, double T_oil, double T_amb, double v_air)
+{
+    double dT = T_oil - T_amb;
+    double hN = hg_h_natural(dT, h->L), hF = hg_h_forced(v_air, h->L);
+    double h_conv = cbrt(hN * hN * hN + hF * hF * hF);
+    double T2 = T_oil * T_oil, Ta2 = T_amb * T_amb;
+    return h->A * (h_conv * dT + h->eps * SIGMA_SB * (T2 * T2 - Ta2 * Ta2));
+}

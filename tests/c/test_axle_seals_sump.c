@@ -1,0 +1,35 @@
+/* Lip seals and the housing's heat to the air (fmu-src/axle/seals.c, sump.c) against hand
+ * calculations of the published correlations (ISO/TR 14179-1 seals; Holman's simplified
+ * natural convection in air, Incropera's flat-plate forced convection, Churchill's n = 3
+ * combination, grey-body radiation). */
+#include "check.h"
+#include "axle/seals.h"
+#include "axle/sump.h"
+
+#define PI 3.14159265358979323846
+
+int main(void)
+{
+    /* ISO/TR 14179-1: d = 40 mm, n = 3000 r/min -> P = 7.69e-6 * 1600 * 3000 = 36.912 W */
+    double w = 3000.0 * PI / 30.0;
+    CHECK_CLOSE(hg_seal_torque(0.040) * w, 36.912, 1e-12, 0);
+    /* natural convection, dT 50 K on L = 0.25 m: 1.42 (200)^(1/4) = 5.34006 W/(m^2 K) */
+    CHECK_CLOSE(hg_h_natural(50.0, 0.25), 5.340056, 1e-6, 0);
+    CHECK_CLOSE(hg_h_natural(-50.0, 0.25), 5.340056, 1e-6, 0);
+    /* forced, laminar: v 10 m/s, L 0.25 m: Re = 1.5733e5, Nu = 234.63, h = 24.6830 */
+    CHECK_CLOSE(hg_h_forced(10.0, 0.25), 24.683023, 1e-6, 0);
+    /* forced, mixed: v 40 m/s, L 0.5 m: Re = 1.2587e6, h = 90.6838 */
+    CHECK_CLOSE(hg_h_forced(40.0, 0.5), 90.683787, 1e-6, 0);
+    CHECK(hg_h_forced(0.0, 0.5) == 0.0);
+    /* housing A 0.4 m^2, L 0.25 m, eps 0.9, oil 70 degC, air 20 degC:
+     * natural only: 0.4 (5.34006*50 + 0.9 sigma (343.15^4 - 293.15^4)) = 239.087 W;
+     * with 10 m/s: h = (5.34006^3 + 24.6830^3)^(1/3) = 24.7661 -> 627.607 W */
+    {
+        hg_housing h = {0.4, 0.25, 0.9};
+        CHECK_CLOSE(hg_housing_heat(&h, 343.15, 293.15, 0.0), 239.08698, 1e-6, 0);
+        CHECK_CLOSE(hg_housing_heat(&h, 343.15, 293.15, 10.0), 627.60701, 1e-6, 0);
+        CHECK(hg_housing_heat(&h, 293.15, 293.15, 10.0) == 0.0);
+        CHECK(hg_housing_heat(&h, 283.15, 293.15, 10.0) < 0.0);
+    }
+    CHECK_DONE();
+}
