@@ -18,6 +18,8 @@ import pathlib
 import sys
 import time
 
+from hypoid.paths import user_path
+
 RPM = math.pi / 30.0
 SPEEDS_RPM = [100, 250, 500, 1000, 1500, 2000, 3000, 4000, 5000, 6000]
 TORQUES = [10, 25, 50, 100, 200, 300, 400]
@@ -155,6 +157,7 @@ def main(argv):
     ap.add_argument("--workers", type=int, default=os.cpu_count() or 1)
     ap.add_argument("--quick", action="store_true", help="a 3 x 3 x 2 grid, for tests")
     args = ap.parse_args(argv)
+    args.fmu = user_path(args.fmu)
     grid = (SPEEDS_RPM, TORQUES, TEMPERATURES_C)
     if args.quick:
         grid = ([500, 2000, 4000], [50, 100, 200], [40, 100])
@@ -170,7 +173,7 @@ def main(argv):
     elif args.out:
         params = {"gear_set": args.gear_set, "lubricant": args.lubricant}
         if args.lubricant_file:
-            params["lubricant_file"] = str(pathlib.Path(args.lubricant_file).resolve())
+            params["lubricant_file"] = user_path(args.lubricant_file)
         jobs = [(pathlib.Path(args.out), params)]
     else:
         ap.error("give --all or --out FILE")

@@ -10,6 +10,8 @@ from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import (FMU2Slave, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE,
                        fmi2CallbackFunctions, fmi2CallbackLoggerTYPE)
 
+from hypoid.paths import data_file
+
 RPM = math.pi / 30.0  # rad/s per rpm
 SPEED_KEY = "speed_rpm"  # a point's pinion speed; sets both w_set and w_p0 (quick start)
 
@@ -152,7 +154,8 @@ def _read_np(path):
 
 def normalize(md, params):
     """Point parameters in canonical form: enumerations by item name, integers as int, reals
-    as float, strings as str (so equal points get equal keys). `speed_rpm` is a float."""
+    as float, strings as str (so equal points get equal keys), data files relative to the working
+    directory made absolute (hypoid/paths.py). `speed_rpm` is a float."""
     by_name = {v.name: v for v in md.modelVariables}
     out = {}
     for name, value in params.items():
@@ -174,7 +177,7 @@ def normalize(md, params):
         elif var.type == "Real":
             out[name] = float(value)
         elif var.type == "String":
-            out[name] = str(value)
+            out[name] = data_file(str(value))
         else:
             out[name] = bool(value)
     return out

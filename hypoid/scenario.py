@@ -12,6 +12,7 @@ import time
 
 import numpy as np
 
+from hypoid.paths import user_path, with_absolute_files
 from hypoid.sweep import parse_assignments, parse_scalar
 
 OUTPUTS = ["w_s", "w_p", "w_g", "w_w", "DTE", "W_t", "T_fp", "T_fg", "P_loss", "P_in", "eta",
@@ -96,11 +97,12 @@ def main(argv):
                     help="start values, e.g. T_s=200 gear_set=2")
     args = ap.parse_args(argv)
     try:
-        start_values = {k: parse_scalar(v) for k, v in parse_assignments(args.set).items()}
+        start_values = with_absolute_files(
+            {k: parse_scalar(v) for k, v in parse_assignments(args.set).items()})
     except ValueError as e:
         print(f"hypoid run: {e}", file=sys.stderr)
         return 2
-    fmu = pathlib.Path(args.fmu)
+    fmu = pathlib.Path(user_path(args.fmu))
     if not fmu.exists():
         print(f"hypoid run: {fmu} not found (build it with scripts/setup.sh)", file=sys.stderr)
         return 2

@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 
 from hypoid import parallel, steady, sweep
 from hypoid.instance import SPEED_KEY
+from hypoid.paths import user_path
 
 SWAPPED_NAME = "OS265963 with alpha* of OS265962"
 SWAPPED_FILE = "OS265963-alpha-OS265962.txt"
@@ -169,6 +170,7 @@ def main(argv):
     ap.add_argument("--workers", type=int, default=2, help="local worker processes; 0 = serial")
     ap.add_argument("--no-report", action="store_true", help="tables only, no plots or report")
     args = ap.parse_args(argv)
+    args.fmu, args.out = user_path(args.fmu), user_path(args.out)
     if not pathlib.Path(args.fmu).exists():
         print(f"hypoid study: {args.fmu} not found (build it with scripts/setup.sh)",
               file=sys.stderr)

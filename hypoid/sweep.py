@@ -20,6 +20,7 @@ import numpy as np
 
 from hypoid import continuation, parallel, results, steady
 from hypoid.instance import SPEED_KEY, normalize, start_values
+from hypoid.paths import user_path
 
 # columns every table carries, so each row describes its point fully
 ESSENTIAL = ("gear_set", "lubricant", "lubricant_file", "T_s", SPEED_KEY, "T_bath",
@@ -219,6 +220,7 @@ def parse_assignments(items):
 
 def main(argv):
     args = _parser().parse_args(argv)
+    args.fmu, args.out = user_path(args.fmu), user_path(args.out)
     from fmpy import read_model_description
 
     try:
