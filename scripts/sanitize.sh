@@ -33,7 +33,8 @@ ASAN_OPTIONS="detect_leaks=1:$common" ctest --test-dir build-asan --output-on-fa
 
 echo "sanitize: C host (ASan + UBSan, leaks checked)"
 cc -std=c99 -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all \
-   -Wall -Wextra -Werror -I"$fmi_include" tests/host/run_fmu.c -o build-asan/run_fmu -ldl -lpthread
+   -Wall -Wextra -Werror -I"$fmi_include" tests/host/run_fmu.c tests/host/fmu_host.c \
+   -o build-asan/run_fmu -ldl -lpthread
 export ASAN_OPTIONS="detect_leaks=1:$common"
 build-asan/run_fmu build-asan/fmu simulate 0.1
 build-asan/run_fmu build-asan/fmu threads 4 0.02

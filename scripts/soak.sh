@@ -13,7 +13,7 @@ cd "$(dirname "$0")/.."
 cycles="${1:-2000}"
 [ -f build/fmu/modelDescription.xml ] || scripts/setup.sh
 fmi_include=$(sed -n 's/^FMI2_INCLUDE_DIR:PATH=//p' build/CMakeCache.txt)
-cc -std=c99 -O2 -g -Wall -Wextra -Werror -I"$fmi_include" tests/host/run_fmu.c -o build/run_fmu \
+cc -std=c99 -O2 -g -Wall -Wextra -Werror -I"$fmi_include" tests/host/run_fmu.c tests/host/fmu_host.c -o build/run_fmu \
    -ldl -lpthread
 build/run_fmu build/fmu soak "$cycles"
 build/run_fmu build/fmu soak $((cycles / 10)) reload

@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 command -v valgrind >/dev/null || scripts/ensure_apt.sh valgrind
 [ -f build/fmu/modelDescription.xml ] || scripts/setup.sh
 fmi_include=$(sed -n 's/^FMI2_INCLUDE_DIR:PATH=//p' build/CMakeCache.txt)
-cc -std=c99 -O2 -g -Wall -Wextra -Werror -I"$fmi_include" tests/host/run_fmu.c -o build/run_fmu \
+cc -std=c99 -O2 -g -Wall -Wextra -Werror -I"$fmi_include" tests/host/run_fmu.c tests/host/fmu_host.c -o build/run_fmu \
    -ldl -lpthread
 
 memcheck=(valgrind -q --error-exitcode=99 --leak-check=full --show-leak-kinds=all

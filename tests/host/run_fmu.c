@@ -19,213 +19,18 @@
  * Errors the FMU logs are printed (everything with RUN_FMU_VERBOSE set) and fail the run.
  * Exit status 0 when every check passes. Used by scripts/sanitize.sh (ASan, valgrind) and
  * scripts/soak.sh. */
-#define _XOPEN_SOURCE 700 /* POSIX 2008 with realpath */
+#define _XOPEN_SOURCE 700 /* POSIX 2008 */
 #include <dirent.h>
-#include <dlfcn.h>
-#include <limits.h>
 #include <pthread.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
-#include "fmi2Functions.h"
+#include "fmu_host.h"
 
 #define H 1e-4 /* communication step [s] */
 #define RSS_TOLERANCE_KIB 2048 /* soak: RSS growth allowed after the warm-up cycles */
-#define MAX_REALS 1024
-
-/* ------------------------------------------------------------------ the FMU's functions */
-
-typedef struct {
-    void *so;
-    fmi2InstantiateTYPE *instantiate;
-    fmi2FreeInstanceTYPE *free_instance;
-    fmi2SetupExperimentTYPE *setup;
-    fmi2EnterInitializationModeTYPE *enter;
-    fmi2ExitInitializationModeTYPE *exit_init;
-    fmi2TerminateTYPE *terminate;
-    fmi2ResetTYPE *reset;
-    fmi2GetRealTYPE *get_real;
-    fmi2SetRealTYPE *set_real;
-    fmi2SetIntegerTYPE *set_integer;
-    fmi2DoStepTYPE *do_step;
-    fmi2GetFMUstateTYPE *get_state;
-    fmi2SetFMUstateTYPE *set_state;
-    fmi2FreeFMUstateTYPE *free_state;
-    fmi2SerializedFMUstateSizeTYPE *state_size;
-    fmi2SerializeFMUstateTYPE *serialize;
-    fmi2DeSerializeFMUstateTYPE *deserialize;
-} fmu_lib;
-
-static void *symbol(void *so, const char *name)
-{
-    void *p = dlsym(so, name);
-    if (!p) fprintf(stderr, "run_fmu: %s is missing: %s\n", name, dlerror());
-    return p;
-}
-
-static int load(fmu_lib *f, const char *so_path)
-{
-    memset(f, 0, sizeof *f);
-    if (!(f->so = dlopen(so_path, RTLD_NOW | RTLD_LOCAL))) {
-        fprintf(stderr, "run_fmu: cannot load %s: %s\n", so_path, dlerror());
-        return -1;
-    }
-#define SYM(field, name) (*(void **)&f->field = symbol(f->so, name)) != NULL
-    if (SYM(instantiate, "fmi2Instantiate") && SYM(free_instance, "fmi2FreeInstance") &&
-        SYM(setup, "fmi2SetupExperiment") && SYM(enter, "fmi2EnterInitializationMode") &&
-        SYM(exit_init, "fmi2ExitInitializationMode") && SYM(terminate, "fmi2Terminate") &&
-        SYM(reset, "fmi2Reset") && SYM(get_real, "fmi2GetReal") &&
-        SYM(set_real, "fmi2SetReal") && SYM(set_integer, "fmi2SetInteger") &&
-        SYM(do_step, "fmi2DoStep") && SYM(get_state, "fmi2GetFMUstate") &&
-        SYM(set_state, "fmi2SetFMUstate") && SYM(free_state, "fmi2FreeFMUstate") &&
-        SYM(state_size, "fmi2SerializedFMUstateSize") &&
-        SYM(serialize, "fmi2SerializeFMUstate") && SYM(deserialize, "fmi2DeSerializeFMUstate"))
-        return 0;
-#undef SYM
-    dlclose(f->so);
-    return -1;
-}
-
-static void unload(fmu_lib *f)
-{
-    if (f->so) dlclose(f->so);
-    f->so = NULL;
-}
-
-/* ------------------------------------------------------------------ the model description */
-
-typedef struct {
-    char so_path[PATH_MAX];
-    char guid[128];
-    char *resource_uri;
-    fmi2ValueReference reals[MAX_REALS]; /* every Real variable */
-    size_t n_reals;
-    char *xml;
-} fmu_info;
-
-static char *read_file(const char *path)
-{
-    FILE *fp = fopen(path, "rb");
-    char *buf;
-    long n;
-    if (!fp) return NULL;
-    if (fseek(fp, 0, SEEK_END) || (n = ftell(fp)) < 0 || fseek(fp, 0, SEEK_SET) ||
-        !(buf = malloc((size_t)n + 1))) {
-        fclose(fp);
-        return NULL;
-    }
-    if (fread(buf, 1, (size_t)n, fp) != (size_t)n) {
-        free(buf);
-        buf = NULL;
-    } else {
-        buf[n] = '\0';
-    }
-    fclose(fp);
-    return buf;
-}
-
-/* The text of attribute attr after position p, copied into out. */
-static int attribute(const char *p, const char *attr, char *out, size_t len)
-{
-    char key[64];
-    const char *v, *end;
-    snprintf(key, sizeof key, " %s=\"", attr);
-    if (!(v = strstr(p, key))) return -1;
-    v += strlen(key);
-    if (!(end = strchr(v, '"')) || (size_t)(end - v) >= len) return -1;
-    memcpy(out, v, (size_t)(end - v));
-    out[end - v] = '\0';
-    return 0;
-}
-
-/* The value reference of the variable called name, or -1. */
-static long value_reference(const fmu_info *m, const char *name)
-{
-    char key[160], vr[32];
-    const char *p;
-    snprintf(key, sizeof key, "<ScalarVariable name=\"%s\"", name);
-    if (!(p = strstr(m->xml, key)) || attribute(p, "valueReference", vr, sizeof vr)) return -1;
-    return strtol(vr, NULL, 10);
-}
-
-/* file:// URI of a local path, percent-encoding all but unreserved characters and '/'. */
-static char *file_uri(const char *path)
-{
-    static const char hex[] = "0123456789ABCDEF";
-    char *uri = malloc(3 * strlen(path) + 8), *o;
-    if (!uri) return NULL;
-    strcpy(uri, "file://");
-    for (o = uri + 7; *path; path++) {
-        unsigned char ch = (unsigned char)*path;
-        if ((ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') ||
-            strchr("-._~/", ch)) {
-            *o++ = (char)ch;
-        } else {
-            *o++ = '%';
-            *o++ = hex[ch >> 4];
-            *o++ = hex[ch & 15];
-        }
-    }
-    *o = '\0';
-    return uri;
-}
-
-static int read_info(fmu_info *m, const char *dir)
-{
-    char path[PATH_MAX], id[128], real_dir[PATH_MAX];
-    const char *p;
-    memset(m, 0, sizeof *m);
-    snprintf(path, sizeof path, "%s/modelDescription.xml", dir);
-    if (!(m->xml = read_file(path)) || attribute(m->xml, "guid", m->guid, sizeof m->guid) ||
-        !(p = strstr(m->xml, "<CoSimulation")) ||
-        attribute(p, "modelIdentifier", id, sizeof id)) {
-        fprintf(stderr, "run_fmu: cannot read %s\n", path);
-        return -1;
-    }
-    snprintf(m->so_path, sizeof m->so_path, "%s/binaries/linux64/%s.so", dir, id);
-    snprintf(path, sizeof path, "%s/resources", dir);
-    if (!realpath(path, real_dir) || !(m->resource_uri = file_uri(real_dir))) {
-        fprintf(stderr, "run_fmu: no resources folder in %s\n", dir);
-        return -1;
-    }
-    for (p = m->xml; (p = strstr(p, "<ScalarVariable ")) != NULL; p++) {
-        const char *close = strstr(p, "</ScalarVariable>"), *real = strstr(p, "<Real");
-        char vr[32];
-        if (real && close && real < close && !attribute(p, "valueReference", vr, sizeof vr) &&
-            m->n_reals < MAX_REALS)
-            m->reals[m->n_reals++] = (fmi2ValueReference)strtoul(vr, NULL, 10);
-    }
-    return m->n_reals ? 0 : -1;
-}
-
-static void free_info(fmu_info *m)
-{
-    free(m->resource_uri);
-    free(m->xml);
-}
-
-/* ------------------------------------------------------------------ logging */
-
-typedef struct {
-    int errors;
-} log_env;
-
-static void logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status status,
-                   fmi2String category, fmi2String message, ...)
-{
-    char text[2048];
-    log_env *e = env;
-    va_list ap;
-    va_start(ap, message);
-    vsnprintf(text, sizeof text, message, ap); /* the message is a format string */
-    va_end(ap);
-    if (status >= fmi2Error && e) e->errors++;
-    if (status >= fmi2Error || getenv("RUN_FMU_VERBOSE"))
-        fprintf(stderr, "[%s] %s (%d): %s\n", name, category, (int)status, text);
-}
 
 /* ------------------------------------------------------------------ one simulation */
 
@@ -234,47 +39,16 @@ typedef struct {
     int gear_set, friction_model, load_mode; /* 0: leave the start value */
 } run_spec;
 
-typedef struct {
-    const fmu_lib *f;
-    const fmu_info *m;
-    fmi2CallbackFunctions cb;
-    log_env log;
-    fmi2Component c;
-} instance;
-
 static int fail(const char *what)
 {
-    fprintf(stderr, "run_fmu: FAILED: %s\n", what);
-    return -1;
+    fprintf(stderr, "run_fmu: ");
+    return host_fail(what);
 }
 
-static int open_instance(instance *in, const fmu_lib *f, const fmu_info *m, const char *name)
-{
-    memset(in, 0, sizeof *in);
-    in->f = f;
-    in->m = m;
-    in->cb.logger = logger;
-    in->cb.allocateMemory = calloc;
-    in->cb.freeMemory = free;
-    in->cb.componentEnvironment = &in->log;
-    in->c = f->instantiate(name, fmi2CoSimulation, m->guid, m->resource_uri, &in->cb, fmi2False,
-                           fmi2False);
-    return in->c ? 0 : fail("fmi2Instantiate");
-}
-
+/* An integer parameter; 0 leaves its start value. */
 static int set_int(instance *in, const char *name, int value)
 {
-    long vr = value_reference(in->m, name);
-    fmi2ValueReference r = (fmi2ValueReference)vr;
-    if (!value) return 0;
-    return vr >= 0 && in->f->set_integer(in->c, &r, 1, &value) == fmi2OK ? 0 : fail(name);
-}
-
-static int set_real(instance *in, const char *name, double value)
-{
-    long vr = value_reference(in->m, name);
-    fmi2ValueReference r = (fmi2ValueReference)vr;
-    return vr >= 0 && in->f->set_real(in->c, &r, 1, &value) == fmi2OK ? 0 : fail(name);
+    return value ? host_set_int(in, name, value) : 0;
 }
 
 /* Parameters and start inputs of spec, then initialisation at t = 0. */
@@ -282,8 +56,8 @@ static int init_instance(instance *in, const run_spec *s)
 {
     if (in->f->setup(in->c, fmi2False, 0.0, 0.0, fmi2False, 0.0) != fmi2OK ||
         set_int(in, "gear_set", s->gear_set) || set_int(in, "friction_model", s->friction_model) ||
-        set_int(in, "load_mode", s->load_mode) || set_real(in, "T_s", s->T_s) ||
-        set_real(in, "w_set", s->w_set) || in->f->enter(in->c) != fmi2OK ||
+        set_int(in, "load_mode", s->load_mode) || host_set_real(in, "T_s", s->T_s) ||
+        host_set_real(in, "w_set", s->w_set) || in->f->enter(in->c) != fmi2OK ||
         in->f->exit_init(in->c) != fmi2OK)
         return fail("initialisation");
     return 0;
@@ -293,7 +67,7 @@ static int init_instance(instance *in, const run_spec *s)
  * read and drop them). */
 static int run_steps(instance *in, double t0, int n, double *out)
 {
-    double scratch[MAX_REALS];
+    double scratch[HOST_MAX_REALS];
     int k;
     for (k = 0; k < n; k++) {
         if (in->f->do_step(in->c, t0 + k * H, H, fmi2True) != fmi2OK) return fail("fmi2DoStep");
@@ -302,14 +76,6 @@ static int run_steps(instance *in, double t0, int n, double *out)
             return fail("fmi2GetReal");
     }
     return 0;
-}
-
-static void close_instance(instance *in)
-{
-    if (!in->c) return;
-    in->f->terminate(in->c);
-    in->f->free_instance(in->c);
-    in->c = NULL;
 }
 
 static int same(const double *a, const double *b, size_t n, const char *what)
@@ -349,7 +115,7 @@ static int simulate(const fmu_lib *f, const fmu_info *m, double t_end)
     fmi2FMUstate s = NULL, s2 = NULL;
     char *blob = NULL, *blob2 = NULL;
     memset(&b, 0, sizeof b);
-    if (!plain || !cont || !again || open_instance(&a, f, m, "a") || init_instance(&a, &spec) ||
+    if (!plain || !cont || !again || host_open(&a, f, m, "a") || init_instance(&a, &spec) ||
         run_steps(&a, 0.0, n, plain))
         goto done;
     /* fmi2Reset gives a fresh instance: the first half again, then take a state */
@@ -363,7 +129,7 @@ static int simulate(const fmu_lib *f, const fmu_info *m, double t_end)
         same(cont, again, rest, "restored state continues bit-identically"))
         goto done;
     /* a second instance with other parameters, from the serialized state */
-    if (open_instance(&b, f, m, "b") || init_instance(&b, &other) ||
+    if (host_open(&b, f, m, "b") || init_instance(&b, &other) ||
         b.f->deserialize(b.c, blob, size, &s2) != fmi2OK || b.f->set_state(b.c, s2) != fmi2OK ||
         run_steps(&b, half * H, n - half, again) ||
         same(cont, again, rest, "deserialized state continues bit-identically in another "
@@ -375,8 +141,8 @@ static int simulate(const fmu_lib *f, const fmu_info *m, double t_end)
     }
     /* a fresh instance, while the others still exist */
     b.f->free_state(b.c, &s2);
-    close_instance(&b);
-    if (open_instance(&b, f, m, "fresh") || init_instance(&b, &spec) ||
+    host_close(&b);
+    if (host_open(&b, f, m, "fresh") || init_instance(&b, &spec) ||
         run_steps(&b, 0.0, n, again) || same(plain, again, (size_t)n * nr, "a fresh instance "
                                                  "reproduces the run"))
         goto done;
@@ -384,8 +150,8 @@ static int simulate(const fmu_lib *f, const fmu_info *m, double t_end)
 done:
     if (s) a.f->free_state(a.c, &s);
     if (s2 && b.c) b.f->free_state(b.c, &s2);
-    close_instance(&a);
-    close_instance(&b);
+    host_close(&a);
+    host_close(&b);
     free(blob);
     free(blob2);
     free(plain);
@@ -430,7 +196,7 @@ static int soak_cycle(const fmu_lib *f, const fmu_info *m, int cycle)
     size_t size = 0;
     char *blob = NULL;
     int rc = -1;
-    if (open_instance(&in, f, m, "soak") || init_instance(&in, &spec) ||
+    if (host_open(&in, f, m, "soak") || init_instance(&in, &spec) ||
         run_steps(&in, 0.0, 20, NULL) || f->get_state(in.c, &s) != fmi2OK ||
         !(blob = serialize(&in, s, &size)) || f->deserialize(in.c, blob, size, &s2) != fmi2OK ||
         f->set_state(in.c, s2) != fmi2OK)
@@ -440,7 +206,7 @@ done:
     if (s) f->free_state(in.c, &s);
     if (s2) f->free_state(in.c, &s2);
     free(blob);
-    close_instance(&in);
+    host_close(&in);
     return rc;
 }
 
@@ -450,7 +216,7 @@ static int soak(const fmu_info *m, int cycles, int reload, int check_rss)
     long rss0 = 0, rss1, warm = cycles / 10 > 20 ? cycles / 10 : 20;
     int fd0 = 0, fd1, k;
     struct timespec t0, t1;
-    if (!reload && load(&f, m->so_path)) return -1;
+    if (!reload && host_load(&f, m->so_path)) return -1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     if (warm >= cycles) warm = 0;
     for (k = 0; k < cycles; k++) {
@@ -458,14 +224,14 @@ static int soak(const fmu_info *m, int cycles, int reload, int check_rss)
             rss0 = rss_kib();
             fd0 = open_fds();
         }
-        if (reload && load(&f, m->so_path)) return -1;
+        if (reload && host_load(&f, m->so_path)) return -1;
         if (soak_cycle(&f, m, k)) {
             fprintf(stderr, "run_fmu soak: cycle %d failed\n", k);
             return -1;
         }
-        if (reload) unload(&f);
+        if (reload) host_unload(&f);
     }
-    if (!reload) unload(&f);
+    if (!reload) host_unload(&f);
     clock_gettime(CLOCK_MONOTONIC, &t1);
     rss1 = rss_kib();
     fd1 = open_fds();
@@ -499,7 +265,7 @@ static void *run_job(void *arg)
     size_t len = (size_t)j->n * j->m->n_reals;
     if (j->start) pthread_barrier_wait(j->start);
     j->rc = -1;
-    if (open_instance(&in, j->f, j->m, "thread") || init_instance(&in, &j->spec) ||
+    if (host_open(&in, j->f, j->m, "thread") || init_instance(&in, &j->spec) ||
         run_steps(&in, 0.0, j->n, j->out))
         goto done;
     if (j->again && (in.f->reset(in.c) != fmi2OK || init_instance(&in, &j->spec) ||
@@ -508,7 +274,7 @@ static void *run_job(void *arg)
         goto done;
     j->rc = in.log.errors ? fail("errors were logged") : 0;
 done:
-    close_instance(&in);
+    host_close(&in);
     return NULL;
 }
 
@@ -585,11 +351,11 @@ int main(int argc, char **argv)
                 "threads N [T]\n");
         return 2;
     }
-    if (read_info(&m, argv[1])) return 1;
+    if (host_read_info(&m, argv[1])) return 1;
     if (strcmp(argv[2], "soak") == 0) {
         rc = soak(&m, argc > 3 ? atoi(argv[3]) : 2000, has_flag(argc, argv, "reload"),
                   !has_flag(argc, argv, "norss"));
-    } else if (load(&f, m.so_path)) {
+    } else if (host_load(&f, m.so_path)) {
         rc = -1;
     } else {
         if (strcmp(argv[2], "simulate") == 0)
@@ -598,8 +364,8 @@ int main(int argc, char **argv)
             rc = threads(&f, &m, argc > 3 ? atoi(argv[3]) : 4, argc > 4 ? atof(argv[4]) : 0.1);
         else
             rc = fail("unknown mode");
-        unload(&f);
+        host_unload(&f);
     }
-    free_info(&m);
+    host_free_info(&m);
     return rc ? 1 : 0;
 }

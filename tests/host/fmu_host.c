@@ -1,0 +1,241 @@
+/* The shared parts of the C FMI hosts: see fmu_host.h. */
+#define _XOPEN_SOURCE 700 /* POSIX 2008 with realpath */
+#include "fmu_host.h"
+
+#include <dlfcn.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+int host_fail(const char *what)
+{
+    fprintf(stderr, "FAILED: %s\n", what);
+    return -1;
+}
+
+/* ------------------------------------------------------------------ the FMU's functions */
+
+static void *symbol(void *so, const char *name)
+{
+    void *p = dlsym(so, name);
+    if (!p) fprintf(stderr, "fmu_host: %s is missing: %s\n", name, dlerror());
+    return p;
+}
+
+int host_load(fmu_lib *f, const char *so_path)
+{
+    memset(f, 0, sizeof *f);
+    if (!(f->so = dlopen(so_path, RTLD_NOW | RTLD_LOCAL))) {
+        fprintf(stderr, "fmu_host: cannot load %s: %s\n", so_path, dlerror());
+        return -1;
+    }
+#define SYM(field, name) (*(void **)&f->field = symbol(f->so, name)) != NULL
+    if (SYM(instantiate, "fmi2Instantiate") && SYM(free_instance, "fmi2FreeInstance") &&
+        SYM(setup, "fmi2SetupExperiment") && SYM(enter, "fmi2EnterInitializationMode") &&
+        SYM(exit_init, "fmi2ExitInitializationMode") && SYM(terminate, "fmi2Terminate") &&
+        SYM(reset, "fmi2Reset") && SYM(get_real, "fmi2GetReal") &&
+        SYM(get_integer, "fmi2GetInteger") && SYM(set_real, "fmi2SetReal") &&
+        SYM(set_integer, "fmi2SetInteger") &&
+        SYM(set_real_input_derivatives, "fmi2SetRealInputDerivatives") &&
+        SYM(do_step, "fmi2DoStep") && SYM(get_state, "fmi2GetFMUstate") &&
+        SYM(set_state, "fmi2SetFMUstate") && SYM(free_state, "fmi2FreeFMUstate") &&
+        SYM(state_size, "fmi2SerializedFMUstateSize") &&
+        SYM(serialize, "fmi2SerializeFMUstate") && SYM(deserialize, "fmi2DeSerializeFMUstate"))
+        return 0;
+#undef SYM
+    dlclose(f->so);
+    return -1;
+}
+
+void host_unload(fmu_lib *f)
+{
+    if (f->so) dlclose(f->so);
+    f->so = NULL;
+}
+
+/* ------------------------------------------------------------------ the model description */
+
+static char *read_file(const char *path)
+{
+    FILE *fp = fopen(path, "rb");
+    char *buf;
+    long n;
+    if (!fp) return NULL;
+    if (fseek(fp, 0, SEEK_END) || (n = ftell(fp)) < 0 || fseek(fp, 0, SEEK_SET) ||
+        !(buf = malloc((size_t)n + 1))) {
+        fclose(fp);
+        return NULL;
+    }
+    if (fread(buf, 1, (size_t)n, fp) != (size_t)n) {
+        free(buf);
+        buf = NULL;
+    } else {
+        buf[n] = '\0';
+    }
+    fclose(fp);
+    return buf;
+}
+
+/* The text of attribute attr after position p, copied into out. */
+static int attribute(const char *p, const char *attr, char *out, size_t len)
+{
+    char key[64];
+    const char *v, *end;
+    snprintf(key, sizeof key, " %s=\"", attr);
+    if (!(v = strstr(p, key))) return -1;
+    v += strlen(key);
+    if (!(end = strchr(v, '"')) || (size_t)(end - v) >= len) return -1;
+    memcpy(out, v, (size_t)(end - v));
+    out[end - v] = '\0';
+    return 0;
+}
+
+long host_value_reference(const fmu_info *m, const char *name)
+{
+    char key[160], vr[32];
+    const char *p;
+    snprintf(key, sizeof key, "<ScalarVariable name=\"%s\"", name);
+    if (!(p = strstr(m->xml, key)) || attribute(p, "valueReference", vr, sizeof vr)) return -1;
+    return strtol(vr, NULL, 10);
+}
+
+/* file:// URI of a local path, percent-encoding all but unreserved characters and '/'. */
+static char *file_uri(const char *path)
+{
+    static const char hex[] = "0123456789ABCDEF";
+    char *uri = malloc(3 * strlen(path) + 8), *o;
+    if (!uri) return NULL;
+    strcpy(uri, "file://");
+    for (o = uri + 7; *path; path++) {
+        unsigned char ch = (unsigned char)*path;
+        if ((ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') ||
+            strchr("-._~/", ch)) {
+            *o++ = (char)ch;
+        } else {
+            *o++ = '%';
+            *o++ = hex[ch >> 4];
+            *o++ = hex[ch & 15];
+        }
+    }
+    *o = '\0';
+    return uri;
+}
+
+int host_read_info(fmu_info *m, const char *dir)
+{
+    char path[PATH_MAX], id[128], real_dir[PATH_MAX];
+    const char *p;
+    memset(m, 0, sizeof *m);
+    snprintf(path, sizeof path, "%s/modelDescription.xml", dir);
+    if (!(m->xml = read_file(path)) || attribute(m->xml, "guid", m->guid, sizeof m->guid) ||
+        !(p = strstr(m->xml, "<CoSimulation")) ||
+        attribute(p, "modelIdentifier", id, sizeof id)) {
+        fprintf(stderr, "fmu_host: cannot read %s\n", path);
+        return -1;
+    }
+    snprintf(m->so_path, sizeof m->so_path, "%s/binaries/linux64/%s.so", dir, id);
+    snprintf(path, sizeof path, "%s/resources", dir);
+    if (!realpath(path, real_dir) || !(m->resource_uri = file_uri(real_dir))) {
+        fprintf(stderr, "fmu_host: no resources folder in %s\n", dir);
+        return -1;
+    }
+    for (p = m->xml; (p = strstr(p, "<ScalarVariable ")) != NULL; p++) {
+        const char *close = strstr(p, "</ScalarVariable>"), *real = strstr(p, "<Real");
+        char vr[32];
+        if (real && close && real < close && !attribute(p, "valueReference", vr, sizeof vr) &&
+            m->n_reals < HOST_MAX_REALS)
+            m->reals[m->n_reals++] = (fmi2ValueReference)strtoul(vr, NULL, 10);
+    }
+    return m->n_reals ? 0 : -1;
+}
+
+void host_free_info(fmu_info *m)
+{
+    free(m->resource_uri);
+    free(m->xml);
+}
+
+/* ------------------------------------------------------------------ logging */
+
+static void logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status status,
+                   fmi2String category, fmi2String message, ...)
+{
+    char text[2048];
+    log_env *e = env;
+    va_list ap;
+    va_start(ap, message);
+    vsnprintf(text, sizeof text, message, ap); /* the message is a format string */
+    va_end(ap);
+    if (status >= fmi2Error && e) e->errors++;
+    if (status >= fmi2Error || getenv("RUN_FMU_VERBOSE"))
+        fprintf(stderr, "[%s] %s (%d): %s\n", name, category, (int)status, text);
+}
+
+/* ------------------------------------------------------------------ instances */
+
+int host_open(instance *in, const fmu_lib *f, const fmu_info *m, const char *name)
+{
+    memset(in, 0, sizeof *in);
+    in->f = f;
+    in->m = m;
+    in->cb.logger = logger;
+    in->cb.allocateMemory = calloc;
+    in->cb.freeMemory = free;
+    in->cb.componentEnvironment = &in->log;
+    in->c = f->instantiate(name, fmi2CoSimulation, m->guid, m->resource_uri, &in->cb, fmi2False,
+                           fmi2False);
+    return in->c ? 0 : host_fail("fmi2Instantiate");
+}
+
+void host_close(instance *in)
+{
+    if (!in->c) return;
+    in->f->terminate(in->c);
+    in->f->free_instance(in->c);
+    in->c = NULL;
+}
+
+int host_set_int(instance *in, const char *name, int value)
+{
+    long vr = host_value_reference(in->m, name);
+    fmi2ValueReference r = (fmi2ValueReference)vr;
+    return vr >= 0 && in->f->set_integer(in->c, &r, 1, &value) == fmi2OK ? 0 : host_fail(name);
+}
+
+int host_set_real(instance *in, const char *name, double value)
+{
+    long vr = host_value_reference(in->m, name);
+    fmi2ValueReference r = (fmi2ValueReference)vr;
+    return vr >= 0 && in->f->set_real(in->c, &r, 1, &value) == fmi2OK ? 0 : host_fail(name);
+}
+
+/* The value of enumeration item `item` of the type the variable element `elem` declares. */
+static int enum_item(const fmu_info *m, const char *elem, const char *item, int *value)
+{
+    char type[128], key[192], v[32];
+    const char *t, *end, *q;
+    if (strncmp(elem, "<Enumeration", 12) || attribute(elem, "declaredType", type, sizeof type))
+        return -1;
+    snprintf(key, sizeof key, "<SimpleType name=\"%s\"", type);
+    if (!(t = strstr(m->xml, key)) || !(end = strstr(t, "</SimpleType>"))) return -1;
+    snprintf(key, sizeof key, "<Item name=\"%s\"", item);
+    if (!(q = strstr(t, key)) || q > end || attribute(q, "value", v, sizeof v)) return -1;
+    *value = (int)strtol(v, NULL, 10);
+    return 0;
+}
+
+int host_set(instance *in, const char *name, const char *text)
+{
+    char key[160], *rest;
+    const char *p, *elem;
+    double x;
+    int i;
+    snprintf(key, sizeof key, "<ScalarVariable name=\"%s\"", name);
+    if (!(p = strstr(in->m->xml, key)) || !(elem = strchr(p, '>'))) return host_fail(name);
+    elem += strspn(elem + 1, " \t\r\n") + 1; /* the type element */
+    x = strtod(text, &rest);
+    if (strncmp(elem, "<Real", 5) == 0) return *rest ? host_fail(text) : host_set_real(in, name, x);
+    if (!*rest && x == (int)x) return host_set_int(in, name, (int)x);
+    return enum_item(in->m, elem, text, &i) ? host_fail(text) : host_set_int(in, name, i);
+}

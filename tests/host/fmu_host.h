@@ -1,0 +1,88 @@
+/* The parts of a small FMI 2.0 co-simulation host in C shared by the test host
+ * (tests/host/run_fmu.c) and the benchmark host (bench/bench_fmu.c): dlopen an unzipped FMU,
+ * read what the host needs from its modelDescription.xml, instantiate it with a logger that
+ * counts errors, and set variables by name. */
+#ifndef HG_FMU_HOST_H
+#define HG_FMU_HOST_H
+
+#include <limits.h>
+#include <stddef.h>
+
+#include "fmi2Functions.h"
+
+#ifndef PATH_MAX
+#define PATH_MAX 4096
+#endif
+#define HOST_MAX_REALS 1024
+
+/* The FMU's functions. */
+typedef struct {
+    void *so;
+    fmi2InstantiateTYPE *instantiate;
+    fmi2FreeInstanceTYPE *free_instance;
+    fmi2SetupExperimentTYPE *setup;
+    fmi2EnterInitializationModeTYPE *enter;
+    fmi2ExitInitializationModeTYPE *exit_init;
+    fmi2TerminateTYPE *terminate;
+    fmi2ResetTYPE *reset;
+    fmi2GetRealTYPE *get_real;
+    fmi2GetIntegerTYPE *get_integer;
+    fmi2SetRealTYPE *set_real;
+    fmi2SetIntegerTYPE *set_integer;
+    fmi2SetRealInputDerivativesTYPE *set_real_input_derivatives;
+    fmi2DoStepTYPE *do_step;
+    fmi2GetFMUstateTYPE *get_state;
+    fmi2SetFMUstateTYPE *set_state;
+    fmi2FreeFMUstateTYPE *free_state;
+    fmi2SerializedFMUstateSizeTYPE *state_size;
+    fmi2SerializeFMUstateTYPE *serialize;
+    fmi2DeSerializeFMUstateTYPE *deserialize;
+} fmu_lib;
+
+/* What the host reads from the model description. */
+typedef struct {
+    char so_path[PATH_MAX];
+    char guid[128];
+    char *resource_uri;
+    fmi2ValueReference reals[HOST_MAX_REALS]; /* every Real variable */
+    size_t n_reals;
+    char *xml;
+} fmu_info;
+
+typedef struct {
+    int errors;
+} log_env;
+
+typedef struct {
+    const fmu_lib *f;
+    const fmu_info *m;
+    fmi2CallbackFunctions cb;
+    log_env log;
+    fmi2Component c;
+} instance;
+
+/* Prints "<prog>: FAILED: what" and returns -1. */
+int host_fail(const char *what);
+
+int host_load(fmu_lib *f, const char *so_path);
+void host_unload(fmu_lib *f);
+
+/* Reads DIR/modelDescription.xml of an unzipped FMU. */
+int host_read_info(fmu_info *m, const char *dir);
+void host_free_info(fmu_info *m);
+
+/* The value reference of the variable called name, or -1. */
+long host_value_reference(const fmu_info *m, const char *name);
+
+/* fmi2Instantiate with a logger that prints errors (everything with RUN_FMU_VERBOSE set) and
+ * counts them in in->log.errors. */
+int host_open(instance *in, const fmu_lib *f, const fmu_info *m, const char *name);
+void host_close(instance *in);
+
+int host_set_int(instance *in, const char *name, int value);
+int host_set_real(instance *in, const char *name, double value);
+/* Sets a Real, Integer or Enumeration variable from text: a number, or an enumeration item's
+ * name ("cvode_adams"). */
+int host_set(instance *in, const char *name, const char *text);
+
+#endif
