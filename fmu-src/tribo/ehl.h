@@ -9,8 +9,6 @@
 #ifndef HG_TRIBO_EHL_H
 #define HG_TRIBO_EHL_H
 
-#include <stddef.h>
-
 #include "model/pair_contact.h"
 #include "tribo/contact.h"
 #include "tribo/lubricant.h"
@@ -80,11 +78,6 @@ typedef struct {
 
 /* Defaults of every field (values in the comments above). */
 void hg_ehl_params_default(hg_ehl_params *p);
-
-/* Checks the parameters (positive moduli and material data, 0 <= nu < 0.5, non-negative
- * friction and roughness data, valid switches). Returns 0, or -1 with a message naming the
- * field. */
-int hg_ehl_params_check(const hg_ehl_params *p, char *err, size_t errlen);
 
 /* One flank pair. *T_c_warm: the caller's warm start for T_c [K] (NaN or <= 0: none), set to the
  * new T_c on return (T_in when there is no contact or no heating). Every field of *out is

@@ -16,15 +16,3 @@ double hg_film_chittenden(double eta0, double alpha_star, double u_e, double W, 
     /* eq. 10 */
     return 4.31 * R_e * exp(0.68 * lnU + 0.49 * lnG - 0.073 * lnW) * (1.0 - exp(-1.23 * r23));
 }
-
-double hg_film_hamrock_dowson(double eta0, double alpha_star, double u, double W, double E_star,
-                              double R_x, double k)
-{
-    double U, G, Wd;
-    if (!(u > 0.0 && W > 0.0 && eta0 > 0.0 && alpha_star > 0.0)) return 0.0;
-    U = eta0 * u / (E_star * R_x);
-    G = alpha_star * E_star;
-    Wd = W / (E_star * R_x * R_x);
-    return 2.69 * R_x * pow(U, 0.67) * pow(G, 0.53) * pow(Wd, -0.067) *
-           (1.0 - 0.61 * exp(-0.73 * k));
-}

@@ -11,10 +11,4 @@
 double hg_film_chittenden(double eta0, double alpha_star, double u_e, double W, double E_star,
                           double R_e, double R_s);
 
-/* Hamrock-Dowson 1977 central film (pure rolling along x, for the cross-check):
- *   h_c = 2.69 R_x U^0.67 G^0.53 W^-0.067 (1 - 0.61 exp(-0.73 k))
- * with U = eta_0 u/(E' R_x), W = W/(E' R_x^2), k the ellipticity. Returns h_c [m]. */
-double hg_film_hamrock_dowson(double eta0, double alpha_star, double u, double W, double E_star,
-                              double R_x, double k);
-
 #endif

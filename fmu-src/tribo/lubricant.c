@@ -10,7 +10,7 @@
 #define MAGIC "hypoid-lubricant"
 #define VERSION 1
 
-/* Value ranges, shared by the loader and hg_lubricant_check. */
+/* Value ranges of the keys. */
 #define A_LO 1e-10
 #define A_HI 1.0
 #define B_LO 1.0
@@ -33,11 +33,6 @@
 #define CP_HI 1e5
 #define RHO_LO 100.0
 #define RHO_HI 5000.0
-
-static int in(double v, double lo, double hi)
-{
-    return v >= lo && v <= hi;
-}
 
 /* Checks spanning several keys; 'where' names the file (or "lubricant") in messages. */
 static int cross_check(const hg_lubricant *l, const char *where, char *err, size_t errlen)
@@ -83,47 +78,6 @@ static int cross_check(const hg_lubricant *l, const char *where, char *err, size
         return -1;
     }
     return 0;
-}
-
-int hg_lubricant_check(const hg_lubricant *l, char *err, size_t errlen)
-{
-    struct {
-        const char *key;
-        double v, lo, hi;
-    } v[] = {{"vogel_a", 0, A_LO, A_HI},      {"vogel_b", 0, B_LO, B_HI},
-             {"vogel_c", 0, C_LO, C_HI},      {"alpha_star_T1", 0, T_LO, T_HI},
-             {"alpha_star_T2", 0, T_LO, T_HI}, {"alpha_star_T3", 0, T_LO, T_HI},
-             {"alpha_star_1", 0, AL_LO, AL_HI}, {"alpha_star_2", 0, AL_LO, AL_HI},
-             {"alpha_star_3", 0, AL_LO, AL_HI}, {"hn_lambda", 0, LAM_LO, LAM_HI},
-             {"hn_alpha", 0, HNA_LO, HNA_HI}, {"hn_beta", 0, HNB_LO, HNB_HI},
-             {"k_f", 0, KF_LO, KF_HI},        {"c_p", 0, CP_LO, CP_HI},
-             {"rho_15", 0, RHO_LO, RHO_HI}};
-    size_t i;
-    v[0].v = l->vogel_a;
-    v[1].v = l->vogel_b;
-    v[2].v = l->vogel_c;
-    for (i = 0; i < 3; i++) {
-        v[3 + i].v = l->alpha_T[i];
-        v[6 + i].v = l->alpha_star[i];
-    }
-    v[9].v = l->hn_lambda;
-    v[10].v = l->hn_alpha;
-    v[11].v = l->hn_beta;
-    v[12].v = l->k_f;
-    v[13].v = l->c_p_f;
-    v[14].v = l->rho_15;
-    for (i = 0; i < sizeof v / sizeof v[0]; i++) {
-        if (!in(v[i].v, v[i].lo, v[i].hi)) {
-            snprintf(err, errlen, "lubricant '%s': %s = %g is outside [%g, %g]", l->name,
-                     v[i].key, v[i].v, v[i].lo, v[i].hi);
-            return -1;
-        }
-    }
-    {
-        char where[HG_LUBRICANT_NAME_LEN + 16];
-        snprintf(where, sizeof where, "lubricant '%s'", l->name);
-        return cross_check(l, where, err, errlen);
-    }
 }
 
 int hg_lubricant_load(const char *path, hg_lubricant *out, char *err, size_t errlen)

@@ -22,12 +22,9 @@ typedef struct {
     double rho_15;        /* density at 15 degC [kg/m^3] (informative) */
 } hg_lubricant;
 
-/* Validates a filled struct (the same range checks as the file loader, plus: alpha*(T) of
- * physics 4.2 positive and non-increasing on [alpha_T[0], alpha_T[2]], and the Vogel pole c at
- * least 40 K below alpha_T[0]). Returns 0, or -1 with a message in err. */
-int hg_lubricant_check(const hg_lubricant *lub, char *err, size_t errlen);
-
-/* Reads a "hypoid-lubricant 1" file into *lub. Returns 0, or -1 with err naming the file and,
+/* Reads a "hypoid-lubricant 1" file into *lub, checking each value's range and, across keys:
+ * alpha*(T) of physics 4.2 non-increasing on [alpha_T[0], alpha_T[2]], the Vogel pole c at least
+ * 40 K below alpha_T[0], hn_alpha hn_beta <= 1. Returns 0, or -1 with err naming the file and,
  * where there is one, the line. *lub is only written on success. */
 int hg_lubricant_load(const char *path, hg_lubricant *lub, char *err, size_t errlen);
 

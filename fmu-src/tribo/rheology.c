@@ -10,12 +10,7 @@ double hg_vogel_ln_eta0(double ln_a, double b, double c, double T)
     return ln_a + b / dT;
 }
 
-double hg_vogel_eta0(const hg_lubricant *lub, double T)
-{
-    return exp(hg_vogel_ln_eta0(log(lub->vogel_a), lub->vogel_b, lub->vogel_c, T));
-}
-
-void hg_alpha_interp_init(const hg_lubricant *lub, hg_alpha_interp *ai)
+static void alpha_interp_init(const hg_lubricant *lub, hg_alpha_interp *ai)
 {
     /* Newton divided differences of the quadratic through the three points (physics 4.2) */
     const double *t = lub->alpha_T, *y = lub->alpha_star;
@@ -29,7 +24,7 @@ void hg_alpha_interp_init(const hg_lubricant *lub, hg_alpha_interp *ai)
     ai->s2 = (ai->d1 + ai->d2 * ((t[2] - t[0]) + (t[2] - t[1]))) / y[2];
 }
 
-double hg_alpha_interp_eval(const hg_alpha_interp *ai, double T, double *dlnalpha_dT)
+static double alpha_interp_eval(const hg_alpha_interp *ai, double T, double *dlnalpha_dT)
 {
     double val;
     if (T < ai->T0) {
@@ -43,13 +38,6 @@ double hg_alpha_interp_eval(const hg_alpha_interp *ai, double T, double *dlnalph
         if (dlnalpha_dT) *dlnalpha_dT = (ai->d1 + ai->d2 * ((T - ai->T0) + (T - ai->T1))) / val;
     }
     return val;
-}
-
-double hg_alpha_star(const hg_lubricant *lub, double T, double *dlnalpha_dT)
-{
-    hg_alpha_interp ai;
-    hg_alpha_interp_init(lub, &ai);
-    return hg_alpha_interp_eval(&ai, T, dlnalpha_dT);
 }
 
 double hg_roelands_A(double ln_eta0)
@@ -98,14 +86,6 @@ static double gamma_cf(double a, double x, double *dC_da)
     }
     *dC_da = (dQ * P - Q * dP) / (P * P);
     return Q / P;
-}
-
-double hg_roelands_alpha_star(double Z, double A)
-{
-    double dC;
-    if (!(Z > 0.0)) return 0.0;
-    if (A < HG_ROELANDS_A_MIN) A = HG_ROELANDS_A_MIN;
-    return Z / (gamma_cf(1.0 / Z, A, &dC) * HG_ROELANDS_P0);
 }
 
 double hg_roelands_Z_exact(double alpha_star, double A, double Z_guess, double *dZ_dA,
@@ -159,9 +139,57 @@ double hg_roelands_Z_exact(double alpha_star, double A, double Z_guess, double *
     return exp(-u);
 }
 
-double hg_roelands_ln_ratio(double A, double Z, double ln1p_p)
+void hg_rheology_init(hg_rheology *r, const hg_lubricant *lub, int z_exact)
 {
-    return A * (exp(Z * ln1p_p) - 1.0); /* exp - 1 is accurate enough here and cheaper */
+    r->lub = lub;
+    alpha_interp_init(lub, &r->ai);
+    r->ln_a = log(lub->vogel_a);
+    r->z_exact = z_exact;
+    r->T_last = r->Z_last = r->dZdT_last = 0.0;
+}
+
+void hg_rheology_at(const hg_rheology *r, double T, hg_rheo_state *s)
+{
+    const hg_lubricant *lub = r->lub;
+    int clamped = !(T - lub->vogel_c > HG_VOGEL_DT_MIN) || T > HG_RHEO_T_MAX;
+    s->T_r = T > HG_RHEO_T_MAX ? HG_RHEO_T_MAX : (clamped ? lub->vogel_c + HG_VOGEL_DT_MIN : T);
+    s->ln_eta0 = hg_vogel_ln_eta0(r->ln_a, lub->vogel_b, lub->vogel_c, s->T_r);
+    s->A = hg_roelands_A(s->ln_eta0);
+    s->alpha = alpha_interp_eval(&r->ai, s->T_r, &s->dlnalpha);
+    s->dL0 = clamped ? 0.0 : -lub->vogel_b / ((s->T_r - lub->vogel_c) * (s->T_r - lub->vogel_c));
+    s->dA = s->ln_eta0 + HG_ROELANDS_LN_ETA_R > HG_ROELANDS_A_MIN ? s->dL0 : 0.0;
+    if (clamped) s->dlnalpha = 0.0;
+    s->Z = s->dZ = 0.0;
+}
+
+/* Z' = Z (d ln(alpha*)/dT - A'/A) for Z_simple = alpha* p0 / A; for Z_exact from its partial
+ * derivatives (implicit differentiation in hg_roelands_Z_exact) */
+void hg_rheology_Z(hg_rheology *r, double T, hg_rheo_state *s)
+{
+    if (r->z_exact) {
+        double dZ_dA, dZ_dlna, guess = 0.0;
+        if (r->Z_last > 0.0) guess = r->Z_last + r->dZdT_last * (T - r->T_last);
+        s->Z = hg_roelands_Z_exact(s->alpha, s->A, guess > 0.0 ? guess : r->Z_last, &dZ_dA,
+                                   &dZ_dlna);
+        s->dZ = dZ_dA * s->dA + dZ_dlna * s->dlnalpha;
+        if (!isfinite(s->dZ)) s->dZ = 0.0;
+        r->T_last = T, r->Z_last = s->Z, r->dZdT_last = s->dZ;
+    } else {
+        s->Z = hg_roelands_Z_simple(s->alpha, s->A);
+        s->dZ = s->Z * (s->dlnalpha - s->dA / s->A);
+    }
+}
+
+/* d ln eta/dT = L0' + A' (e^(Z lp) - 1) + A e^(Z lp) lp Z' */
+double hg_roelands_ln_eta(const hg_rheo_state *s, double ln1p_p, double *dlneta_dT)
+{
+    double eZ = exp(s->Z * ln1p_p), ln_eta = s->ln_eta0 + s->A * (eZ - 1.0); /* eq. 9 */
+    *dlneta_dT = s->dL0 + s->dA * (eZ - 1.0) + s->A * eZ * ln1p_p * s->dZ;
+    if (ln_eta > HG_LN_ETA_MAX) {
+        *dlneta_dT = 0.0;
+        return HG_LN_ETA_MAX;
+    }
+    return ln_eta;
 }
 
 double hg_hn_factor(double lambda, double alpha_hn, double beta_hn, double gamma_dot)

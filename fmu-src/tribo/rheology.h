@@ -22,10 +22,10 @@
 
 /* ln eta_0 = ln a + b/(T - c), T clamped to >= c + HG_VOGEL_DT_MIN (Vogel). */
 double hg_vogel_ln_eta0(double ln_a, double b, double c, double T);
-double hg_vogel_eta0(const hg_lubricant *lub, double T);
 
-/* alpha*(T) interpolant of physics 4.2 with its coefficients computed once (pure data; build it
- * with hg_alpha_interp_init whenever the lubricant changes, or let hg_alpha_star do it). */
+/* alpha*(T) interpolant of physics 4.2 with its coefficients computed once: the quadratic through
+ * the three data points inside [alpha_T[0], alpha_T[2]], log-linear outside with the slope of
+ * ln alpha* of the quadratic at the nearest end (C1-continuous). */
 typedef struct {
     double T0, T1, T2; /* data temperatures [K] */
     double y0, y2;     /* alpha* at T0 and T2 [1/Pa] */
@@ -33,13 +33,40 @@ typedef struct {
     double s0, s2;     /* d ln alpha* / dT of the quadratic at T0 and T2 [1/K] */
 } hg_alpha_interp;
 
-void hg_alpha_interp_init(const hg_lubricant *lub, hg_alpha_interp *ai);
-double hg_alpha_interp_eval(const hg_alpha_interp *ai, double T, double *dlnalpha_dT);
+/* The rheology of one lubricant, evaluated temperature by temperature (physics 4): build it once
+ * per call of the friction model with hg_rheology_init. It carries the warm start of Z_exact
+ * between temperatures, so it is the caller's scratch, not shared data. */
+typedef struct {
+    const hg_lubricant *lub;
+    hg_alpha_interp ai; /* alpha*(T) coefficients */
+    double ln_a;        /* ln of Vogel a */
+    int z_exact;        /* Z from Blok's alpha* exactly (1) or Z_simple (0) */
+    double T_last, Z_last, dZdT_last; /* previous Z_exact (warm start) */
+} hg_rheology;
 
-/* alpha*(T) [1/Pa] (physics 4.2): the quadratic through the three data points inside
- * [alpha_T[0], alpha_T[2]], log-linear outside with the slope of ln alpha* of the quadratic at the
- * nearest end (C1-continuous). *dlnalpha_dT (may be NULL) receives d ln alpha* / dT [1/K]. */
-double hg_alpha_star(const hg_lubricant *lub, double T, double *dlnalpha_dT);
+/* The rheology at one temperature, with the temperature derivatives [1/K]. The rheology is
+ * evaluated at T clamped to [c + HG_VOGEL_DT_MIN, HG_RHEO_T_MAX]; where clamped, the derivatives
+ * of ln eta_0 and ln alpha* are 0. */
+typedef struct {
+    double T_r;     /* the clamped temperature [K] */
+    double ln_eta0; /* Vogel ln eta_0 [ln Pa s] */
+    double A;       /* Roelands index (hg_roelands_A) */
+    double alpha;   /* alpha*(T_r) [1/Pa] */
+    double Z;       /* Roelands Z (0 until hg_rheology_Z) */
+    double dL0, dA, dlnalpha, dZ; /* d/dT of ln eta_0, A, ln alpha*, Z */
+} hg_rheo_state;
+
+void hg_rheology_init(hg_rheology *r, const hg_lubricant *lub, int z_exact);
+
+/* ln eta_0, A and alpha* at T (everything but Z). */
+void hg_rheology_at(const hg_rheology *r, double T, hg_rheo_state *s);
+
+/* Adds Z and dZ/dT at the same T to *s (Z_exact warm-started from the previous call). */
+void hg_rheology_Z(hg_rheology *r, double T, hg_rheo_state *s);
+
+/* Roelands ln eta(p, T) = ln eta_0 + A [(1 + p/p0)^Z - 1] given ln1p_p = ln(1 + p/p0), capped at
+ * HG_LN_ETA_MAX, and in *dlneta_dT its temperature derivative [1/K] (paper eq. 9). */
+double hg_roelands_ln_eta(const hg_rheo_state *s, double ln1p_p, double *dlneta_dT);
 
 /* Roelands index A = max(ln eta_0 + 9.67, HG_ROELANDS_A_MIN). */
 double hg_roelands_A(double ln_eta0);
@@ -47,28 +74,22 @@ double hg_roelands_A(double ln_eta0);
 /* Z_simple = alpha* p0 / A: the Roelands initial slope equals alpha*. */
 double hg_roelands_Z_simple(double alpha_star, double A);
 
-/* Blok's alpha* = [int_0^inf eta(0)/eta(p) dp]^-1 of the Roelands law with index Z [1/Pa].
- * Exact evaluation: with u = A((1+p/p0)^Z - 1) the integral is (p0/(Z A)) L, and
- * L = int_0^inf e^-u (1+u/A)^(1/Z-1) du = A e^A A^(-1/Z) Gamma(1/Z, A), so
- * alpha* p0 = Z / C(1/Z, A) with C(a, x) = e^x x^-a Gamma(a, x) evaluated by its continued
- * fraction (no quadrature needed). */
-double hg_roelands_alpha_star(double Z, double A);
-
 /* Validated domain of Z_exact: alpha* p0 >= HG_Z_EXACT_S_MIN (alpha* >= 0.05 1/GPa) and
  * A <= HG_Z_EXACT_A_MAX; outside it (only reachable by extrapolating alpha*(T) far beyond the
  * data) Z_exact falls back to Z_simple. */
 #define HG_Z_EXACT_S_MIN 0.0098
 #define HG_Z_EXACT_A_MAX 300.0
 
-/* Z_exact: the Z for which hg_roelands_alpha_star(Z, A) = alpha*, by Newton on ln(1/Z)
- * (relative accuracy ~1e-14, hence smooth in T). Z_guess > 0 warm-starts it (<= 0: none).
+/* Z_exact: the Z for which Blok's alpha* = [int_0^inf eta(0)/eta(p) dp]^-1 of the Roelands law
+ * equals the given alpha*. With u = A((1+p/p0)^Z - 1) the integral is (p0/(Z A)) L, and
+ * L = int_0^inf e^-u (1+u/A)^(1/Z-1) du = A e^A A^(-1/Z) Gamma(1/Z, A), so
+ * alpha* p0 = Z / C(1/Z, A) with C(a, x) = e^x x^-a Gamma(a, x) evaluated by its continued
+ * fraction (no quadrature); solved by Newton on ln(1/Z) (relative accuracy ~1e-14, hence smooth
+ * in T). Z_guess > 0 warm-starts it (<= 0: none).
  * dZ_dA and dZ_dlnalpha (may be NULL) receive the partial derivatives of Z_exact with respect to
  * A and ln alpha*, by implicit differentiation. Returns 0 when alpha* <= 0. */
 double hg_roelands_Z_exact(double alpha_star, double A, double Z_guess, double *dZ_dA,
                            double *dZ_dlnalpha);
-
-/* ln(eta/eta_0) = A [(1 + p/p0)^Z - 1], given ln1p_p = ln(1 + p/p0) (Roelands). */
-double hg_roelands_ln_ratio(double A, double Z, double ln1p_p);
 
 /* Havriliak-Negami F(gamma_dot) = (1 + (lambda gamma_dot)^alpha_HN)^beta_HN (paper eq. 8);
  * the shear stress is tau = eta gamma_dot / F (eq. 7). */

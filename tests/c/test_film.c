@@ -11,6 +11,18 @@
 #define W 2380.0
 #define RX 17.65e-3
 
+/* Hamrock-Dowson 1977 central film (pure rolling along x), the independent reference:
+ *   h_c = 2.69 R_x U^0.67 G^0.53 W^-0.067 (1 - 0.61 exp(-0.73 k))
+ * with U = eta_0 u/(E' R_x), W = W/(E' R_x^2), k the ellipticity [m] */
+static double hamrock_dowson(double eta0, double alpha_star, double u, double load,
+                             double E_star, double R_x, double k)
+{
+    double U = eta0 * u / (E_star * R_x), G = alpha_star * E_star;
+    double Wd = load / (E_star * R_x * R_x);
+    return 2.69 * R_x * pow(U, 0.67) * pow(G, 0.53) * pow(Wd, -0.067) *
+           (1.0 - 0.61 * exp(-0.73 * k));
+}
+
 int main(void)
 {
     size_t i;
@@ -24,7 +36,7 @@ int main(void)
         for (i = 0; i < 3; i++) {
             double k = hg_ellipticity(ratio[i], HG_HERTZ_EXACT, NULL, NULL);
             double hc = hg_film_chittenden(ETA0, ALPHA, 3.81, W, ES, RX, RX * ratio[i]);
-            double hh = hg_film_hamrock_dowson(ETA0, ALPHA, 3.81, W, ES, RX, k);
+            double hh = hamrock_dowson(ETA0, ALPHA, 3.81, W, ES, RX, k);
             printf("R_y/R_x %6.1f  Chittenden %.1f nm  Hamrock-Dowson %.1f nm  (%+.2f %%)\n",
                    ratio[i], hc * 1e9, hh * 1e9, 100.0 * (hc / hh - 1.0));
             CHECK_CLOSE(hc, ch[i], 0.005, 0);
@@ -63,6 +75,5 @@ int main(void)
     /* degenerate inputs give 0, never NaN */
     CHECK(hg_film_chittenden(ETA0, ALPHA, 0.0, W, ES, RX, 1.0) == 0.0);
     CHECK(hg_film_chittenden(ETA0, ALPHA, 1.0, 0.0, ES, RX, 1.0) == 0.0);
-    CHECK(hg_film_hamrock_dowson(ETA0, ALPHA, 0.0, W, ES, RX, 10.0) == 0.0);
     CHECK_DONE();
 }
