@@ -113,15 +113,19 @@ SWEEP_SETTINGS = [("full", W.Setting("bdf", 1e-6)), ("full", W.Setting("adams", 
                   ("map", W.Setting("newmark", 10))]
 
 DIAG_CASES = [
-    ("varying, frictionless", dict(mesh_model=2, friction_model=1)),
-    ("varying, frictionless, e_0 = 0", dict(mesh_model=2, friction_model=1, e_0_scale=0.0)),
-    ("varying, coulomb", dict(mesh_model=2, friction_model=2, backlash_model=1)),
-    ("varying, ehl_isothermal", dict(mesh_model=2, friction_model=3, backlash_model=1)),
-    ("varying, ehl_thermal (full)", dict(mesh_model=2, friction_model=4, backlash_model=1)),
-    ("mean, frictionless", dict(mesh_model=1, friction_model=1)),
-    ("mean, ehl_thermal", dict(mesh_model=1, friction_model=4)),
-    ("rigid, ehl_thermal", dict(mesh_model=3, friction_model=4)),
-    ("rigid, map", dict(mesh_model=3, friction_model=5)),
+    ("varying, frictionless", dict(mesh_model="varying", friction_model="none")),
+    ("varying, frictionless, e_0 = 0", dict(mesh_model="varying", friction_model="none",
+                                            e_0_scale=0.0)),
+    ("varying, coulomb", dict(mesh_model="varying", friction_model="coulomb",
+                              backlash_model="exact")),
+    ("varying, ehl_isothermal", dict(mesh_model="varying", friction_model="ehl_isothermal",
+                                     backlash_model="exact")),
+    ("varying, ehl_thermal (full)", dict(mesh_model="varying", friction_model="ehl_thermal",
+                                         backlash_model="exact")),
+    ("mean, frictionless", dict(mesh_model="mean", friction_model="none")),
+    ("mean, ehl_thermal", dict(mesh_model="mean", friction_model="ehl_thermal")),
+    ("rigid, ehl_thermal", dict(mesh_model="rigid", friction_model="ehl_thermal")),
+    ("rigid, map", dict(mesh_model="rigid", friction_model="map")),
 ]
 
 

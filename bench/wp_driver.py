@@ -19,21 +19,19 @@ Errors that matter and where they come from:
 import ctypes
 import math
 import os
-import shutil
 import statistics
-import tempfile
 import time
 from dataclasses import dataclass, field
 
 import numpy as np
-from fmpy import extract, read_model_description
-from fmpy.fmi1 import FMICallException
-from fmpy.fmi2 import (FMU2Slave, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE,
-                       fmi2CallbackFunctions, fmi2CallbackLoggerTYPE)
-from fmpy import calloc, free
-from hypoid.levels import LEVELS as _LEVELS
+from fmpy.fmi1 import FMICallException as _RawCallError
 
-RPM = math.pi / 30.0
+from hypoid import instance as hypoid_instance
+from hypoid.instance import FmuError, unzipped
+from hypoid.levels import LEVELS as _LEVELS
+from hypoid.values import RPM
+
+FMICallException = (_RawCallError, FmuError)  # a failed call, raw (inst.s) or through Instance
 COMM = 0.05          # [s] communication step of the timed runs (window bounds are multiples)
 FINE_PER_CYCLE = 64  # samples per mesh cycle of the fine runs (CVODE)
 
@@ -59,8 +57,9 @@ class Setting:
     @property
     def start(self):
         if self.solver == "newmark":
-            return dict(solver=3, steps_per_mesh_cycle=int(self.value))
-        out = dict(solver=1 if self.solver.startswith("bdf") else 2, rtol=self.value,
+            return dict(solver="newmark", steps_per_mesh_cycle=int(self.value))
+        out = dict(solver="cvode_bdf" if self.solver.startswith("bdf") else "cvode_adams",
+                   rtol=self.value,
                    atol=ATOL_PER_RTOL * self.value)
         if self.solver.endswith("_free"):
             out["max_step"] = 1.0
@@ -117,7 +116,7 @@ def reversal_scene(rpm=1500.0, torque=100.0, t_rev=0.25, ratio=36.0 / 13.0):
     w = rpm * RPM
     return Scene("reversal", f"torque reversal {torque:+.0f} -> {-torque:+.0f} N.m in one step at "
                  f"t = {t_rev} s, {rpm:.0f} rpm, torque-driven (T_w = T_s i), 40 degC", rpm,
-                 dict(load_mode=1, T_s=torque, T_w=torque * ratio, w_p0=w, T_bath=313.15),
+                 dict(load_mode="torque", T_s=torque, T_w=torque * ratio, w_p0=w, T_bath=313.15),
                  0.5, (0.2, 0.5), [(t_rev, dict(T_s=-torque, T_w=-torque * ratio))])
 
 
@@ -139,74 +138,43 @@ def scenes(resonance_rpm=1200.0):
 
 
 class Fmu:
-    """The FMU extracted once into a private directory (other engineers may rebuild
-    build/HypoidGearPair.fmu while the benchmark runs)."""
+    """The FMU unzipped once per content (hypoid.instance's cache, so other engineers may
+    rebuild build/HypoidGearPair.fmu while the benchmark runs)."""
 
     def __init__(self, path, map_file=None):
         self.path = str(path)
-        self.dir = tempfile.mkdtemp(prefix="hg_wp_")
-        extract(self.path, self.dir)
-        self.md = read_model_description(self.path)
-        self.vr = {v.name: v.valueReference for v in self.md.modelVariables}
-        self.types = {v.name: v.type for v in self.md.modelVariables}
+        self.dir = str(unzipped(self.path))
+        probe = hypoid_instance.Instance(self.dir, name="wp-probe")
+        self.md, self.vr = probe.md, {n: v.vr for n, v in probe.vars.items()}
+        probe.close()
         self.map_file = map_file  # efficiency_map_file for the map level, if not built in
 
     def close(self):
-        shutil.rmtree(self.dir, ignore_errors=True)
+        pass  # the unzipped copy stays in the cache for the next run
 
 
 class RunError(Exception):
     pass
 
 
-class Instance:
-    def __init__(self, fmu, name="wp"):
-        self.fmu, self.messages = fmu, []
-        md = fmu.md
-        self.s = FMU2Slave(guid=md.guid, unzipDirectory=fmu.dir,
-                           modelIdentifier=md.coSimulation.modelIdentifier, instanceName=name)
-        cb = fmi2CallbackFunctions()
-        cb.logger = fmi2CallbackLoggerTYPE(self._log)
-        cb.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
-        cb.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
-        self._cb = cb
-        self.s.instantiate(loggingOn=False, callbacks=cb)
-        self.t = 0.0
+class Instance(hypoid_instance.Instance):
+    """hypoid.instance.Instance with the benchmark's names: `s` the raw slave, init/free."""
 
-    def _log(self, env, inst, status, category, message):
-        self.messages.append((status, message.decode(errors="replace").replace("%%", "%")))
+    def __init__(self, fmu, name="wp"):
+        super().__init__(fmu.dir, name=name)
+        self.fmu, self.s = fmu, self.slave
 
     def set(self, values):
-        for name, value in values.items():
-            kind, ref = self.fmu.types[name], [self.fmu.vr[name]]
-            if kind == "Real":
-                self.s.setReal(ref, [float(value)])
-            elif kind == "String":
-                self.s.setString(ref, [str(value)])
-            else:
-                self.s.setInteger(ref, [int(value)])
+        self.set_many(values)
 
     def init(self, values):
-        self.s.setupExperiment(startTime=0.0)
-        self.set(values)
-        self.s.enterInitializationMode()
-        self.s.exitInitializationMode()
-
-    def reals(self, names):
-        return self.s.getReal([self.fmu.vr[n] for n in names])
-
-    def ints(self, names):
-        return self.s.getInteger([self.fmu.vr[n] for n in names])
+        self.start(values)
 
     def error_text(self):
-        return "; ".join(m for st, m in self.messages if st >= 3)[-400:]
+        return "; ".join(m[2] for m in self.errors())[-400:]
 
     def free(self):
-        try:
-            self.s.terminate()
-        except FMICallException:
-            pass
-        self.s.freeInstance()
+        self.close()
 
 
 def start_values(fmu, scene, level, setting):

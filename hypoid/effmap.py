@@ -11,16 +11,16 @@ mesh cycles from the FMU's energy audit: eta = 1 - dE_friction / dE_input.
 """
 
 import argparse
-import concurrent.futures
 import math
 import os
 import pathlib
 import sys
 import time
 
+from hypoid import parallel
 from hypoid.paths import user_path
+from hypoid.values import RPM
 
-RPM = math.pi / 30.0
 SPEEDS_RPM = [100, 250, 500, 1000, 1500, 2000, 3000, 4000, 5000, 6000]
 TORQUES = [10, 25, 50, 100, 200, 300, 400]
 TEMPERATURES_C = [20, 40, 70, 100, 130]
@@ -29,80 +29,39 @@ TEMPERATURES_C = [20, 40, 70, 100, 130]
 # number of those periods gives the exact mean.
 SETTLE_CYCLES, WINDOW_CYCLES, SETTLE_MIN_S = 12, 24, 0.15
 LUBRICANTS = {1: "OS265962", 2: "OS265963"}
-
-_slave = {}  # one FMU instance per worker process, reused through fmi2Reset
-
-
-def _print_errors(env, instance, status, category, message):
-    """Errors only: the expected warnings (e.g. set 3's damping fallback) would repeat per point."""
-    if status >= 3:
-        print(f"[{category.decode()}] {message.decode()}", file=sys.stderr)
+ENERGIES = ["E_in", "E_out", "E_friction"]
 
 
-def _instance(fmu):
-    from fmpy import calloc, extract, free, read_model_description
-    from fmpy.fmi2 import (FMU2Slave, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE,
-                           fmi2CallbackFunctions, fmi2CallbackLoggerTYPE)
-
-    if fmu not in _slave:
-        md = read_model_description(fmu)
-        s = FMU2Slave(guid=md.guid, unzipDirectory=extract(fmu),
-                      modelIdentifier=md.coSimulation.modelIdentifier, instanceName="effmap")
-        callbacks = fmi2CallbackFunctions()
-        callbacks.logger = fmi2CallbackLoggerTYPE(_print_errors)
-        callbacks.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
-        callbacks.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
-        s.callbacks_keepalive = callbacks
-        s.instantiate(callbacks=callbacks)
-        _slave[fmu] = (s, {v.name: (v.valueReference, v.type) for v in md.modelVariables})
-    return _slave[fmu]
-
-
-def _set(s, refs, name, value):
-    vr, kind = refs[name]
-    if kind == "Real":
-        s.setReal([vr], [float(value)])
-    elif kind == "String":
-        s.setString([vr], [str(value)])
-    else:
-        s.setInteger([vr], [int(value)])
-
-
-def efficiency_point(fmu, params, speed, torque, T_bath, coast):
-    """Steady conjunctional efficiency of one operating point (full model)."""
-    s, refs = _instance(fmu)
-    s.reset()
-    s.setupExperiment(startTime=0.0)
-    values = dict(params, w_set=speed, w_p0=speed, T_s=-torque if coast else torque,
-                  T_bath=T_bath, load_mode=2)
-    for name, value in values.items():
-        _set(s, refs, name, value)
-    s.enterInitializationMode()
-    s.exitInitializationMode()
-    N_p = s.getInteger([refs["N_p"][0]])[0]
-    mesh_period = 2 * math.pi / (N_p * speed)
+def efficiency_point(inst, params, speed, torque, T_bath, coast):
+    """Steady conjunctional efficiency of one operating point (full model) on `inst`."""
+    inst.start(dict(params, w_set=speed, w_p0=speed, T_s=-torque if coast else torque,
+                    T_bath=T_bath, load_mode="speed"))
+    mesh_period = 2 * math.pi / (inst.pinion_teeth() * speed)
     settle = max(SETTLE_MIN_S, SETTLE_CYCLES * mesh_period)
-    s.doStep(0.0, settle)
-    names = ["E_in", "E_out", "E_friction"]
-    before = s.getReal([refs[n][0] for n in names])
-    s.doStep(settle, WINDOW_CYCLES * mesh_period)
-    after = s.getReal([refs[n][0] for n in names])
+    inst.do_step(0.0, settle)
+    before = inst.reals(ENERGIES)
+    inst.do_step(settle, WINDOW_CYCLES * mesh_period)
+    after = inst.reals(ENERGIES)
     d_in, d_out, d_fric = (a - b for a, b in zip(after, before))
     supplied = -d_out if coast else d_in
-    return 1.0 - d_fric / supplied
-
-
-def _point_task(args):
-    fmu, params, speed, torque, T_bath, coast = args
-    return efficiency_point(fmu, params, speed, torque, T_bath, coast)
+    return {"status": "ok", "eta": 1.0 - d_fric / supplied}
 
 
 def compute_map(fmu, params, speeds_rpm, torques, temperatures_c, workers):
-    """eta[direction][temperature][speed][torque] over the grid, in parallel."""
-    tasks = [(fmu, params, n * RPM, T, K + 273.15, d)
-             for d in (False, True) for K in temperatures_c for n in speeds_rpm for T in torques]
-    with concurrent.futures.ProcessPoolExecutor(max_workers=workers) as pool:
-        etas = list(pool.map(_point_task, tasks, chunksize=4))
+    """eta[direction][temperature][speed][torque] over the grid, in parallel (hypoid.parallel:
+    one reused instance per worker, a progress bar)."""
+    points = [(params, n * RPM, T, K + 273.15, d)
+              for d in (False, True) for K in temperatures_c for n in speeds_rpm for T in torques]
+    etas = [None] * len(points)
+
+    def store(i, res):
+        if res.get("status") != "ok":
+            raise RuntimeError(f"map point {points[i][1:]}: {res.get('message')}")
+        etas[i] = res["eta"]
+
+    with parallel.executor(workers=workers) as client:
+        parallel.run([(i, efficiency_point, p) for i, p in enumerate(points)],
+                     parallel.FmuRef(fmu), store, client, desc="map points")
     return etas
 
 
@@ -154,7 +113,8 @@ def main(argv):
     ap.add_argument("--gear-set", type=int, default=1)
     ap.add_argument("--lubricant", type=int, default=1)
     ap.add_argument("--lubricant-file")
-    ap.add_argument("--workers", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("--workers", type=int, default=os.cpu_count() or 1,
+                    help="worker processes (0: in this process)")
     ap.add_argument("--quick", action="store_true", help="a 3 x 3 x 2 grid, for tests")
     args = ap.parse_args(argv)
     args.fmu = user_path(args.fmu)

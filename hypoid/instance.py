@@ -1,41 +1,100 @@
-"""One reusable FMU instance for studies: loads the FMU once, sets start values by variable name
-(enumerations by item name or number), restarts with fmi2Reset between operating points and
-reads the gear set's pinion tooth count (the mesh period needs it)."""
+"""The one way the tools, benchmarks and tests reach an FMU: `Instance(fmu_path)` unzips the FMU
+once per content (a cache in the temporary folder), instantiates a co-simulation slave, sets
+values by name (enumerations by item name or code, `speed_rpm` for w_set and w_p0; see
+hypoid.values), steps, reads, restarts with fmi2Reset and frees. Every failed FMI call raises
+`FmuError` with the FMU's last log messages."""
 
-import math
+import functools
+import hashlib
+import os
 import pathlib
+import shutil
+import tempfile
+import zipfile
 
-from fmpy import calloc, extract, free, read_model_description
+from fmpy import calloc, free, read_model_description
 from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import (FMU2Slave, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE,
                        fmi2CallbackFunctions, fmi2CallbackLoggerTYPE)
 
-from hypoid.paths import data_file
+from hypoid.values import RPM, SPEED_KEY, TABLE, BadValue, Table  # noqa: F401 (re-exported)
 
-RPM = math.pi / 30.0  # rad/s per rpm
-SPEED_KEY = "speed_rpm"  # a point's pinion speed; sets both w_set and w_p0 (quick start)
+ERROR = 3  # fmi2Status of errors (fmi2Error) and worse
+RAW = {"Real": float, "Integer": int, "Enumeration": int, "Boolean": bool, "String": str}
 
 
 class FmuError(RuntimeError):
-    """An FMI call failed; the message carries the FMU's last log messages."""
+    """An FMI call failed; the message carries the FMU's last log messages, `function` and
+    `status` the failed call and its fmi2Status."""
+
+    def __init__(self, message, function="", status=ERROR):
+        super().__init__(message)
+        self.function, self.status = function, status
 
 
+# ---------------------------------------------------------------------------- the unzipped FMU
+def unzip_bytes(sha, data):
+    """The FMU given as bytes, unpacked once per machine in <tmp>/hypoid-fmu/<sha> (atomic
+    rename, so parallel workers can race)."""
+    root = pathlib.Path(tempfile.gettempdir()) / "hypoid-fmu"
+    target = root / sha[:24]
+    if (target / "modelDescription.xml").exists():
+        return target
+    root.mkdir(parents=True, exist_ok=True)
+    tmp = pathlib.Path(tempfile.mkdtemp(dir=root, prefix=".unzip-"))
+    try:
+        fmu = tmp / "model.fmu"
+        fmu.write_bytes(data)
+        with zipfile.ZipFile(fmu) as z:
+            z.extractall(tmp / "x")
+        try:
+            os.rename(tmp / "x", target)
+        except OSError:  # another process won the race
+            pass
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+    return target
+
+
+def unzipped(fmu_path):
+    """The unpacked folder of an FMU file (or the folder itself if it is one already)."""
+    p = pathlib.Path(fmu_path)
+    if p.is_dir():
+        return p
+    if not p.is_file():
+        raise FileNotFoundError(f"{p}: no such FMU (build it with scripts/setup.sh)")
+    data = p.read_bytes()
+    return unzip_bytes(hashlib.sha256(data).hexdigest(), data)
+
+
+@functools.lru_cache(maxsize=16)
+def _description(directory):
+    md = read_model_description(str(pathlib.Path(directory) / "modelDescription.xml"))
+    return md, Table.from_model_description(md)
+
+
+# ---------------------------------------------------------------------------- one instance
 class Instance:
-    """An instantiated co-simulation slave of the HypoidGearPair FMU."""
+    """An instantiated co-simulation slave. `messages` holds (status, category, text) of the
+    FMU's log (the last `keep_messages`); `logging` switches on the FMU's debug logging."""
 
-    def __init__(self, fmu_path, unzip_dir=None, name="study"):
+    def __init__(self, fmu_path, unzip_dir=None, name="hypoid", logging=False,
+                 keep_messages=1000, model_identifier=None, guid=None):
         self.fmu_path = str(fmu_path)
-        self.md = read_model_description(self.fmu_path)
-        self.unzip_dir = unzip_dir or extract(self.fmu_path)
-        self.vars = {v.name: v for v in self.md.modelVariables}
+        self.unzip_dir = str(unzip_dir or unzipped(fmu_path))
+        self.md, self.table = _description(self.unzip_dir)
+        self.vars = self.table.variables
         self.messages = []
+        self.keep_messages = keep_messages
         self._callbacks = self._make_callbacks()
-        self.slave = FMU2Slave(guid=self.md.guid, unzipDirectory=self.unzip_dir,
-                               modelIdentifier=self.md.coSimulation.modelIdentifier,
+        self.slave = FMU2Slave(guid=guid or self.md.guid, unzipDirectory=self.unzip_dir,
+                               modelIdentifier=model_identifier
+                               or self.md.coSimulation.modelIdentifier,
                                instanceName=name)
-        self.slave.instantiate(callbacks=self._callbacks, loggingOn=False)
+        self._call(self.slave.instantiate, callbacks=self._callbacks, loggingOn=logging)
+        self.t = 0.0
         self.used = False
-        self._np_cache = {}
+        self.freed = False
 
     def _make_callbacks(self):
         cb = fmi2CallbackFunctions()
@@ -45,151 +104,131 @@ class Instance:
         return cb
 
     def _log(self, component, instance, status, category, message):
-        self.messages.append(message.decode(errors="replace").replace("%%", "%"))
-        del self.messages[:-20]
+        self.messages.append((status, category.decode(errors="replace"),
+                              message.decode(errors="replace").replace("%%", "%")))
+        if len(self.messages) > self.keep_messages:
+            del self.messages[:-self.keep_messages]
+
+    def errors(self):
+        return [m for m in self.messages if m[0] >= ERROR]
+
+    def _call(self, fn, *args, **kwargs):
+        try:
+            return fn(*args, **kwargs)
+        except FMICallException as e:
+            tail = " | ".join(m[2] for m in self.messages[-3:])
+            raise FmuError(f"{e}" + (f": {tail}" if tail else ""), e.function, e.status) from None
 
     # ------------------------------------------------------------------ values
     def ref(self, name):
-        if name not in self.vars:
-            raise KeyError(f"the FMU has no variable {name!r}")
-        return self.vars[name].valueReference
+        return self.table.variable(name).vr
 
     def enum_value(self, name, value):
-        """An enumeration value from its item name ('ehl_thermal') or number (4)."""
-        items = self.vars[name].declaredType.items
-        if isinstance(value, str) and not value.lstrip("-").isdigit():
-            for item in items:
-                if item.name == value:
-                    return int(item.value)
-            raise ValueError(f"{name} has no item {value!r} (items: "
-                             + ", ".join(i.name for i in items) + ")")
-        return int(value)
+        """An enumeration's code from its item name ('ehl_thermal') or code (4)."""
+        return self.table.code(self.table.variable(name), value)
+
+    def set_raw(self, var, value):
+        """One value straight to the setter of the variable's type (no conversion)."""
+        ref = [var.vr]
+        if var.type == "Real":
+            self._call(self.slave.setReal, ref, [value])
+        elif var.type in ("Integer", "Enumeration"):
+            self._call(self.slave.setInteger, ref, [value])
+        elif var.type == "String":
+            self._call(self.slave.setString, ref, [value])
+        else:
+            self._call(self.slave.setBoolean, ref, [value])
 
     def set(self, name, value):
-        var = self.vars.get(name)
-        if var is None:
-            raise KeyError(f"the FMU has no variable {name!r}")
-        ref = [var.valueReference]
-        if var.type == "Real":
-            self.slave.setReal(ref, [float(value)])
-        elif var.type == "Enumeration":
-            self.slave.setInteger(ref, [self.enum_value(name, value)])
-        elif var.type == "Integer":
-            self.slave.setInteger(ref, [int(value)])
-        elif var.type == "String":
-            self.slave.setString(ref, [str(value)])
-        else:
-            self.slave.setBoolean(ref, [bool(value)])
+        self.set_many({name: value})
+
+    def set_many(self, params):
+        """Sets variables by name (and `speed_rpm`); values in any form hypoid.values takes."""
+        for var, value in self.table.fmu_values(params):
+            self.set_raw(var, value)
 
     def get(self, name):
-        var = self.vars[name]
+        var = self.table.variable(name)
         if var.type == "Real":
-            return self.slave.getReal([var.valueReference])[0]
+            return self._call(self.slave.getReal, [var.vr])[0]
         if var.type == "String":
-            return self.slave.getString([var.valueReference])[0].decode()
-        return self.slave.getInteger([var.valueReference])[0]
+            return self._call(self.slave.getString, [var.vr])[0].decode()
+        if var.type == "Boolean":
+            return self._call(self.slave.getBoolean, [var.vr])[0]
+        return self._call(self.slave.getInteger, [var.vr])[0]
+
+    def reals(self, names):
+        return self._call(self.slave.getReal, [self.ref(n) for n in names])
+
+    def ints(self, names):
+        return self._call(self.slave.getInteger, [self.ref(n) for n in names])
 
     # ------------------------------------------------------------------ life cycle
-    def start(self, params):
-        """fmi2Reset (if used before), set the point's start values, initialise at t = 0.
-
-        `params` maps FMU variable names to values; `speed_rpm` sets w_set and w_p0."""
-        try:
-            if self.used:
-                self.slave.reset()
-            self.used = True
-            self.messages.clear()
-            self.slave.setupExperiment(startTime=0.0)
-            for name, value in params.items():
-                if name == SPEED_KEY:
-                    self.set("w_set", value * RPM)
-                    self.set("w_p0", value * RPM)
-                else:
-                    self.set(name, value)
-            self.slave.enterInitializationMode()
-            self.slave.exitInitializationMode()
-        except FMICallException as e:
-            raise FmuError(self._explain(e)) from None
+    def start(self, params=None, start_time=0.0, stop_time=None):
+        """fmi2Reset (if used before), set the start values, initialise at start_time."""
+        if self.used:
+            self._call(self.slave.reset)
+        self.used = True
+        self.messages.clear()
+        self._call(self.slave.setupExperiment, startTime=start_time, stopTime=stop_time)
+        self.set_many(params or {})
+        self._call(self.slave.enterInitializationMode)
+        self._call(self.slave.exitInitializationMode)
+        self.t = start_time
+        return self
 
     def do_step(self, t, h):
-        try:
-            self.slave.doStep(currentCommunicationPoint=t, communicationStepSize=h)
-        except FMICallException as e:
-            raise FmuError(self._explain(e)) from None
+        self._call(self.slave.doStep, currentCommunicationPoint=t, communicationStepSize=h)
+        self.t = t + h
 
-    def _explain(self, e):
-        tail = " | ".join(self.messages[-3:])
-        return f"{e}" + (f": {tail}" if tail else "")
+    def step(self, h):
+        """One communication step of size h from the current time."""
+        self.do_step(self.t, h)
+
+    def record(self, t_end, h, names):
+        """Steps of size h up to t_end; returns the named Real outputs after each step as an
+        array (one row a step)."""
+        import numpy as np
+
+        refs = [self.ref(n) for n in names]
+        rows = []
+        for _ in range(int(round((t_end - self.t) / h))):
+            self.do_step(self.t, h)
+            rows.append(self._call(self.slave.getReal, refs))
+        return np.array(rows)
 
     def pinion_teeth(self):
-        """N_p of the gear set in use (after initialisation): the calculated parameter N_p, or
-        the gear set's data file with FMUs that lack it."""
-        if "N_p" in self.vars:
-            return int(self.get("N_p"))
-        path = self.get("gear_set_file")
-        if not path:
-            path = f"gearsets/gearset{self.get('gear_set')}.txt"
-        p = pathlib.Path(path)
-        if not p.is_absolute():
-            p = pathlib.Path(self.unzip_dir) / "resources" / p
-        if p not in self._np_cache:
-            self._np_cache[p] = _read_np(p)
-        return self._np_cache[p]
+        """N_p of the gear set in use (after initialisation)."""
+        return int(self.get("N_p"))
 
-    def close(self):
-        try:
-            self.slave.terminate()
-        except Exception:  # noqa: BLE001 - the instance may be in an error state
-            pass
+    def terminate(self):
+        self._call(self.slave.terminate)
+
+    def close(self, terminate=True):
+        """fmi2Terminate (when initialised and `terminate`) and fmi2FreeInstance; safe to call
+        twice."""
+        if self.freed:
+            return
+        self.freed = True
+        if terminate and self.used:
+            try:
+                self.slave.terminate()
+            except FMICallException:  # the instance may be in an error state
+                pass
         self.slave.freeInstance()
 
+    def __enter__(self):
+        return self
 
-def _read_np(path):
-    for line in pathlib.Path(path).read_text().splitlines():
-        words = line.split("#", 1)[0].split()
-        if len(words) == 2 and words[0] == "N_p":
-            return int(words[1])
-    raise ValueError(f"{path}: no N_p line")
+    def __exit__(self, *exc):
+        self.close()
 
 
-def normalize(md, params):
-    """Point parameters in canonical form: enumerations by item name, integers as int, reals
-    as float, strings as str (so equal points get equal keys), data files relative to the working
-    directory made absolute (hypoid/paths.py). `speed_rpm` is a float."""
-    by_name = {v.name: v for v in md.modelVariables}
-    out = {}
-    for name, value in params.items():
-        var = by_name.get(name)
-        if name == SPEED_KEY:
-            out[name] = float(value)
-        elif var is None:
-            raise KeyError(f"the FMU has no variable {name!r}")
-        elif var.type == "Enumeration":
-            items = var.declaredType.items
-            text = str(value)
-            match = [i.name for i in items if i.name == text or str(i.value) == text]
-            if not match:
-                raise ValueError(f"{name} has no item {value!r} (items: "
-                                 + ", ".join(f"{i.value}={i.name}" for i in items) + ")")
-            out[name] = match[0]
-        elif var.type == "Integer":
-            out[name] = int(value)
-        elif var.type == "Real":
-            out[name] = float(value)
-        elif var.type == "String":
-            out[name] = data_file(str(value))
-        else:
-            out[name] = bool(value)
-    return out
+def normalize(params, table=TABLE):
+    """Point parameters in canonical form (hypoid.values.Table.canonical)."""
+    return table.normalize(params)
 
 
-def start_values(md, names):
-    """The model description's start values of the named variables, normalised."""
-    by_name = {v.name: v for v in md.modelVariables}
-    values = {}
-    for n in names:
-        if n == SPEED_KEY:
-            values[n] = round(float(by_name["w_set"].start) / RPM, 9)
-        else:
-            values[n] = by_name[n].start if by_name[n].start is not None else ""
-    return normalize(md, values)
+def start_values(names, table=TABLE):
+    """The start values of the named variables (and `speed_rpm`), normalised."""
+    return {n: table.start(n) for n in names}

@@ -1,13 +1,19 @@
 """The FMU's fidelity levels and solvers as start values (README, 'Fidelity levels and solvers'):
-one definition for the benchmarks and the tests."""
+one definition for the benchmarks and the tests, by enumeration item name (checked against the
+generated variable table when imported; hypoid.instance.Instance sets items by name)."""
 
-LEVELS = {
-    "full": dict(mesh_model=2, friction_model=4, backlash_model=1),
-    "smoothed": dict(mesh_model=2, friction_model=4, backlash_model=2),
-    "isothermal": dict(mesh_model=2, friction_model=3, backlash_model=1),
-    "mean": dict(mesh_model=1, friction_model=4),
-    "rigid": dict(mesh_model=3, friction_model=4),
-    "map": dict(mesh_model=3, friction_model=5),
-}
+from hypoid.values import TABLE
 
-SOLVERS = {"bdf": dict(solver=1), "adams": dict(solver=2), "newmark": dict(solver=3)}
+LEVELS = {name: TABLE.normalize(values) for name, values in {
+    "full": dict(mesh_model="varying", friction_model="ehl_thermal", backlash_model="exact"),
+    "smoothed": dict(mesh_model="varying", friction_model="ehl_thermal",
+                     backlash_model="smoothed"),
+    "isothermal": dict(mesh_model="varying", friction_model="ehl_isothermal",
+                       backlash_model="exact"),
+    "mean": dict(mesh_model="mean", friction_model="ehl_thermal"),
+    "rigid": dict(mesh_model="rigid", friction_model="ehl_thermal"),
+    "map": dict(mesh_model="rigid", friction_model="map"),
+}.items()}
+
+SOLVERS = {"bdf": dict(solver="cvode_bdf"), "adams": dict(solver="cvode_adams"),
+           "newmark": dict(solver="newmark")}

@@ -4,11 +4,15 @@ load, and the load-weighted friction coefficient, film thickness and Stribeck ra
 
 import numpy as np
 
-PAIRS = (1, 2, 3)
+from hypoid.values import TABLE
+
+PAIRS = tuple(k for k in range(1, 100) if f"pair[{k}].W" in TABLE.variables)  # the tooth pairs
 PAIR_FIELDS = ("W", "mu", "h_c", "lambda", "T_c", "g_V", "g_E", "R_e", "R_s")
 SCALARS = ("w_p", "DTE", "W_t", "P_loss", "P_in", "eta", "eta_cycle", "P_loss_cycle")
 REALS = SCALARS + tuple(f"pair[{k}].{f}" for k in PAIRS for f in PAIR_FIELDS)
 INTEGERS = ("contact", "n_impacts")
+for _name in REALS + INTEGERS:  # a renamed FMU variable fails here, not in a worker
+    TABLE.variable(_name)
 MIN_PAIR_LOAD = 1.0  # N: below it a pair counts as out of contact (physics.md §13 item 14)
 
 

@@ -12,12 +12,9 @@ import hashlib
 import logging
 import os
 import pathlib
-import shutil
-import tempfile
 import threading
 import time
 import traceback
-import zipfile
 
 from tqdm import tqdm
 
@@ -35,36 +32,15 @@ class FmuRef:
 
 
 # ---------------------------------------------------------------------------- worker side
-def _unzip_dir(sha, data):
-    """The FMU unpacked once per machine in <tmp>/hypoid-fmu/<sha> (atomic rename)."""
-    root = pathlib.Path(tempfile.gettempdir()) / "hypoid-fmu"
-    target = root / sha[:24]
-    if (target / "modelDescription.xml").exists():
-        return target
-    root.mkdir(parents=True, exist_ok=True)
-    tmp = pathlib.Path(tempfile.mkdtemp(dir=root, prefix=".unzip-"))
-    fmu = tmp / "model.fmu"
-    fmu.write_bytes(data)
-    with zipfile.ZipFile(fmu) as z:
-        z.extractall(tmp / "x")
-    try:
-        os.rename(tmp / "x", target)
-    except OSError:  # another process won the race
-        pass
-    shutil.rmtree(tmp, ignore_errors=True)
-    return target
-
-
 def instance_for(sha, data):
     """This process's (and thread's) FMU instance, created on first use."""
-    from hypoid.instance import Instance
+    from hypoid.instance import Instance, unzip_bytes
 
     key = (sha, threading.get_ident())
     with _LOCK:
         inst = _INSTANCES.get(key)
     if inst is None:
-        d = _unzip_dir(sha, data)
-        inst = Instance(d, unzip_dir=str(d), name=f"worker-{os.getpid()}")
+        inst = Instance(unzip_bytes(sha, data), name=f"worker-{os.getpid()}")
         with _LOCK:
             _INSTANCES[key] = inst
     return inst

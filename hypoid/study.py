@@ -123,22 +123,19 @@ def unique(points):
 
 def run(name, out, fmu_path, scheduler=None, workers=2):
     """Runs a study; returns (points, continuation, info)."""
-    from fmpy import read_model_description
-
     spec = SPECS[name]
     out = pathlib.Path(out)
     out.mkdir(parents=True, exist_ok=True)
-    md = read_model_description(fmu_path)
     fmu = parallel.FmuRef(fmu_path)
     swapped = swapped_lubricant(out)
     extra_cols = sorted({k for _, base, _ in spec.extra for k in base})
-    points = unique(sweep.complete(md, points_of(spec, swapped), extra_cols))
-    traced = sweep.complete(md, [{"gear_set": 1, "lubricant": 1, "T_s": t, SPEED_KEY: n}
-                                 for t, n in spec.trace_points], extra_cols)
+    points = unique(sweep.complete(points_of(spec, swapped), extra_cols))
+    traced = sweep.complete([{"gear_set": 1, "lubricant": 1, "T_s": t, SPEED_KEY: n}
+                             for t, n in spec.trace_points], extra_cols)
     sweeps = [({k: v for k, v in p.items() if k != SPEED_KEY}, spec.sweep_speeds)
-              for p in sweep.complete(md, [{"gear_set": s, "lubricant": 1, "T_s": t}
-                                           for s in spec.sweep_sets
-                                           for t in spec.sweep_torques], extra_cols)]
+              for p in sweep.complete([{"gear_set": s, "lubricant": 1, "T_s": t}
+                                       for s in spec.sweep_sets
+                                       for t in spec.sweep_torques], extra_cols)]
     t0 = time.time()
     with parallel.executor(scheduler, workers) as client:
         t1 = time.time()

@@ -64,11 +64,11 @@ def grid(base, vary):
             for combo in itertools.product(*(vary[n] for n in names))]
 
 
-def complete(md, points, extra=()):
+def complete(points, extra=()):
     """Normalised points that all carry the same columns (missing ones at their start value)."""
     names = list(dict.fromkeys(list(ESSENTIAL) + list(extra) + [k for p in points for k in p]))
-    defaults = start_values(md, names)
-    return [normalize(md, {**defaults, **p}) for p in points]
+    defaults = start_values(names)
+    return [normalize({**defaults, **p}) for p in points]
 
 
 def key_of(params, settings, fmu, **extra):
@@ -221,12 +221,9 @@ def parse_assignments(items):
 def main(argv):
     args = _parser().parse_args(argv)
     args.fmu, args.out = user_path(args.fmu), user_path(args.out)
-    from fmpy import read_model_description
-
     try:
         base = {k: parse_scalar(v) for k, v in parse_assignments(args.set).items()}
         vary = {k: parse_values(v) for k, v in parse_assignments(args.vary).items()}
-        md = read_model_description(args.fmu)
         settings = steady.Settings(samples_per_cycle=args.samples_per_cycle,
                                    window_cycles=args.window_cycles,
                                    max_settle_time=args.max_settle_time)
@@ -234,7 +231,7 @@ def main(argv):
         speeds = vary.pop(SPEED_KEY, None) if args.continuation else None
         if args.continuation and not speeds:
             raise ValueError("--continuation needs --vary speed_rpm=...")
-        points = complete(md, grid(base, vary))
+        points = complete(grid(base, vary))
     except (ValueError, KeyError, OSError) as e:
         print(f"hypoid sweep: {e}", file=sys.stderr)
         return 2

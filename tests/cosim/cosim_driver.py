@@ -293,31 +293,23 @@ def run_libcosim(scene, h, gear_fmu, vehicle_fmu=VEHICLE_FMU):
 
 
 class _Slave:
+    """One FMU through hypoid.instance.Instance; `fmu` is the raw fmpy slave the master drives
+    call by call."""
+
     def __init__(self, path, name, workdir):
-        from fmpy import extract, read_model_description
-        from fmpy.fmi2 import FMU2Slave
-        self.md = read_model_description(str(path))
-        unzipped = extract(str(path), str(pathlib.Path(workdir) / name))
-        self.var = {v.name: v for v in self.md.modelVariables}
-        self.fmu = FMU2Slave(guid=self.md.guid, unzipDirectory=unzipped,
-                             modelIdentifier=self.md.coSimulation.modelIdentifier,
-                             instanceName=name)
-        self.fmu.instantiate()
+        from hypoid.instance import Instance
+        self.inst = Instance(path, name=name)
+        self.fmu = self.inst.slave
 
     def vr(self, names):
-        return [self.var[n].valueReference for n in names]
+        return [self.inst.ref(n) for n in names]
 
     def set_start(self, values):
-        for name, value in values.items():
-            v = self.var[name]
-            if v.type in ("Integer", "Enumeration"):
-                self.fmu.setInteger([v.valueReference], [int(value)])
-            else:
-                self.fmu.setReal([v.valueReference], [float(value)])
+        self.inst.set_many(values)
 
 
 def run_fmpy(scene, h, algorithm="jacobi", gear_fmu=GEAR_FMU, vehicle_fmu=VEHICLE_FMU):
-    """The scene in a fixed-step master written here with fmpy's FMU2Slave.
+    """The scene in a fixed-step master written here with hypoid.instance (fmpy's FMU2Slave).
 
     jacobi: libcosim's fixed_step_algorithm call for call: start values in the instantiated
       state, fmi2SetupExperiment(start 0, no stop time), initialization mode with as many

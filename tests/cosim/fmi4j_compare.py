@@ -7,39 +7,21 @@ the ones FMI4j printed.
 
 Exit status 1 when an output differs by more than 1e-9 relative (1e-12 absolute near zero)."""
 
+import pathlib
 import sys
-import tempfile
 
-from fmpy import extract, read_model_description
-from fmpy.fmi2 import FMU2Slave
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2]))
+from hypoid.instance import Instance  # noqa: E402
 
 
 def fmpy_outputs(fmu, stop, h, settings):
-    md = read_model_description(fmu)
-    var = {v.name: v for v in md.modelVariables}
-    with tempfile.TemporaryDirectory() as tmp:
-        slave = FMU2Slave(guid=md.guid, unzipDirectory=extract(fmu, tmp),
-                          modelIdentifier=md.coSimulation.modelIdentifier, instanceName="fmpy")
-        slave.instantiate()
-        slave.setupExperiment(startTime=0.0, stopTime=stop)
-        for name, value in settings.items():
-            v = var[name]
-            if v.type == "Real":
-                slave.setReal([v.valueReference], [float(value)])
-            else:
-                slave.setInteger([v.valueReference], [int(value)])
-        slave.enterInitializationMode()
-        slave.exitInitializationMode()
-        for k in range(round(stop / h)):
-            slave.doStep(k * h, h)
-        out = {}
-        for v in md.modelVariables:
-            if v.causality == "output" and v.type == "Real":
-                out[v.name] = slave.getReal([v.valueReference])[0]
-            elif v.causality == "output" and v.type == "Integer":
-                out[v.name] = slave.getInteger([v.valueReference])[0]
-        slave.terminate()
-        slave.freeInstance()
+    inst = Instance(fmu, name="fmpy")
+    inst.start(settings, stop_time=stop)
+    for k in range(round(stop / h)):
+        inst.do_step(k * h, h)
+    out = {name: inst.get(name) for name, v in inst.vars.items()
+           if v.causality == "output" and v.type in ("Real", "Integer")}
+    inst.close()
     return out
 
 

@@ -1,15 +1,13 @@
 """Shared fixtures for the FMU tests: the built FMU, its extracted copy, and a small harness
-around fmpy's FMU2Slave that records log messages and drives steps."""
+on hypoid.instance.Instance that records log messages and drives steps."""
 
 import pathlib
 import shutil
 
-import numpy as np
 import pytest
 from fmpy import extract, read_model_description
-from fmpy import free, calloc
-from fmpy.fmi2 import (FMU2Slave, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE,
-                       fmi2CallbackFunctions, fmi2CallbackLoggerTYPE)
+
+from hypoid.instance import RAW, Instance
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 FMU_PATH = ROOT / "build" / "HypoidGearPair.fmu"
@@ -34,81 +32,47 @@ def model_description(fmu_path):
     return read_model_description(str(fmu_path))
 
 
-class Harness:
-    """One FMU instance driven step by step; `messages` collects (status, category, text)."""
+class Harness(Instance):
+    """One FMU instance driven step by step (hypoid.instance.Instance); `fmu` is the raw fmpy
+    slave, `set` passes values to the FMU unchecked (its own checks are under test) and
+    `messages` collects (status, category, text)."""
 
-    def __init__(self, unzipped, md, name="instance", logging=False):
-        self.md = md
-        self.vr = {v.name: v.valueReference for v in md.modelVariables}
-        self.types = {v.name: v.type for v in md.modelVariables}
-        self.messages = []
-        self.fmu = FMU2Slave(guid=md.guid, unzipDirectory=str(unzipped),
-                             modelIdentifier=md.coSimulation.modelIdentifier, instanceName=name)
-        self.callbacks = fmi2CallbackFunctions()
-        self.callbacks.logger = fmi2CallbackLoggerTYPE(self._log)
-        self.callbacks.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
-        self.callbacks.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
-        self.fmu.instantiate(loggingOn=logging, callbacks=self.callbacks)
-        self.t = 0.0
-        self.freed = False
-
-    def _log(self, component, instance, status, category, message):
-        self.messages.append((status, category.decode(), message.decode().replace("%%", "%")))
+    def __init__(self, unzipped, name="instance", logging=False):
+        super().__init__(unzipped, name=name, logging=logging, keep_messages=10 ** 6)
+        self.fmu = self.slave
 
     def set(self, **values):
         for name, value in values.items():
-            name = name.replace("__", ".")
-            kind, ref = self.types[name], [self.vr[name]]
-            if kind == "Real":
-                self.fmu.setReal(ref, [float(value)])
-            elif kind in ("Integer", "Enumeration"):
-                self.fmu.setInteger(ref, [int(value)])
-            elif kind == "String":
-                self.fmu.setString(ref, [value])
-            else:
-                self.fmu.setBoolean(ref, [bool(value)])
+            var = self.table.variable(name.replace("__", "."))
+            self.set_raw(var, RAW[var.type](value))
 
     def get(self, *names):
-        out = []
-        for name in names:
-            kind = self.types[name]
-            getter = self.fmu.getReal if kind == "Real" else self.fmu.getInteger
-            out.append(getter([self.vr[name]])[0])
+        out = [Instance.get(self, name) for name in names]
         return out[0] if len(out) == 1 else out
 
     def init(self, start=0.0, **values):
-        self.fmu.setupExperiment(startTime=start)
+        self.used = True
+        self._call(self.fmu.setupExperiment, startTime=start)
         self.set(**values)
-        self.fmu.enterInitializationMode()
-        self.fmu.exitInitializationMode()
+        self._call(self.fmu.enterInitializationMode)
+        self._call(self.fmu.exitInitializationMode)
         self.t = start
         return self
 
     def run(self, t_end, h, names):
         """Steps to t_end with step h; returns an array of the named outputs after each step."""
-        rows = []
-        n = int(round((t_end - self.t) / h))
-        for _ in range(n):
-            self.fmu.doStep(currentCommunicationPoint=self.t, communicationStepSize=h)
-            self.t += h
-            rows.append(self.fmu.getReal([self.vr[x] for x in names]))
-        return np.array(rows)
-
-    def errors(self):
-        return [m for m in self.messages if m[0] >= 3]
+        return self.record(t_end, h, names)
 
     def free(self):
-        if not self.freed:
-            self.freed = True
-            self.fmu.freeInstance()
+        self.close(terminate=False)
 
 
 @pytest.fixture
-def harness(unzipped, model_description):
+def harness(unzipped):
     made = []
 
     def make(**kwargs):
-        h = Harness(unzipped, model_description, **kwargs)
+        h = Harness(unzipped, **kwargs)
         made.append(h)
         return h
 

@@ -16,63 +16,33 @@ does not cancel) and the energy audit at the end:
 
 import json
 import math
+import pathlib
 import sys
 import time
 
-from fmpy import calloc, free, read_model_description
-from fmpy.fmi1 import FMICallException
-from fmpy.fmi2 import (FMU2Slave, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE,
-                       fmi2CallbackFunctions, fmi2CallbackLoggerTYPE)
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2]))
+from hypoid.instance import FmuError, Instance  # noqa: E402
 
 ENERGY = ["E_in", "E_out", "E_friction", "E_damping", "E_excitation", "E_stored"]
+FINAL_REALS = ["w_p", "DTE", "eta", "eta_cycle", "P_loss", "W_t"]
+FINAL_INTS = ["contact", "n_impacts", "solver_steps", "rhs_evals"]
 
 
 class Runner:
     def __init__(self, unzipped):
         self.dir = unzipped
-        self.md = read_model_description(unzipped)
-        self.var = {v.name: v for v in self.md.modelVariables}
-        self.real_outputs = [v.name for v in self.md.modelVariables if v.type == "Real"
-                             and v.causality in ("output", "calculatedParameter")]
 
     def run(self, case):
-        messages = []
-
-        def logger(env, inst, status, category, message):
-            messages.append([status, category.decode(), message.decode(errors="replace")
-                             .replace("%%", "%")])
-
-        cb = fmi2CallbackFunctions()
-        cb.logger = fmi2CallbackLoggerTYPE(logger)
-        cb.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
-        cb.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
-        s = FMU2Slave(guid=self.md.guid, unzipDirectory=self.dir,
-                      modelIdentifier=self.md.coSimulation.modelIdentifier,
-                      instanceName=case["id"][:60])
-        s.instantiate(loggingOn=False, callbacks=cb)
-        s.setDebugLogging(True, ["logStatusWarning", "logStatusError"])
-        vr = {n: v.valueReference for n, v in self.var.items()}
+        inst = Instance(self.dir, name=case["id"][:60])
+        inst._call(inst.slave.setDebugLogging, True, ["logStatusWarning", "logStatusError"])
+        real_outputs = [v.name for v in inst.vars.values() if v.type == "Real"
+                        and v.causality in ("output", "calculatedParameter")]
         out = dict(id=case["id"], stage="init", t=0.0)
         c0 = time.process_time()
-
-        def set_values(values):
-            for name, value in values.items():
-                kind = self.var[name].type
-                if kind == "Real":
-                    s.setReal([vr[name]], [float(value)])
-                elif kind == "String":
-                    s.setString([vr[name]], [str(value)])
-                else:
-                    s.setInteger([vr[name]], [int(value)])
-
         try:
             t0 = case.get("start", 0.0)
-            s.setupExperiment(startTime=t0)
-            set_values(case["values"])
-            s.enterInitializationMode()
-            s.exitInitializationMode()
-            vr_e = [vr[n] for n in ENERGY]
-            e_prev = s.getReal(vr_e)
+            inst.start(case["values"], start_time=t0)
+            e_prev = inst.reals(ENERGY)
             out["E_stored0"] = e_prev[-1]
             gross = [0.0, 0.0]  # sum of |dE_in| and |dE_out| over the communication steps
             out["stage"] = "step"
@@ -81,40 +51,33 @@ class Runner:
             events = {int(round(t / h)): v for t, v in case.get("events", [])}
             for k in range(n):
                 if k in events:
-                    set_values(events[k])
-                s.doStep(t0 + k * h, h)
+                    inst.set_many(events[k])
+                inst.do_step(t0 + k * h, h)
                 out["t"] = t0 + (k + 1) * h
-                e = s.getReal(vr_e)
+                e = inst.reals(ENERGY)
                 gross[0] += abs(e[0] - e_prev[0])
                 gross[1] += abs(e[1] - e_prev[1])
                 e_prev = e
             out["stage"] = "ok"
             out["gross_in"], out["gross_out"] = gross
-        except FMICallException as e:
+        except FmuError as e:
             out["exception"] = str(e)
         out["cpu"] = time.process_time() - c0
         try:
-            values = s.getReal([vr[n] for n in self.real_outputs])
-            out["nonfinite"] = [n for n, x in zip(self.real_outputs, values)
+            out["nonfinite"] = [n for n, x in zip(real_outputs, inst.reals(real_outputs))
                                 if not math.isfinite(x)]
-            E = dict(zip(ENERGY, s.getReal([vr[n] for n in ENERGY])))
+            E = dict(zip(ENERGY, inst.reals(ENERGY)))
             out["E"] = E
             if "E_stored0" in out:
                 out["residual"] = (E["E_in"] - E["E_out"] - E["E_friction"] - E["E_damping"]
                                    + E["E_excitation"] - (E["E_stored"] - out["E_stored0"]))
-            named = ["w_p", "DTE", "eta", "eta_cycle", "P_loss", "W_t"]
-            out["final"] = dict(zip(named, s.getReal([vr[n] for n in named])))
-            ints = ["contact", "n_impacts", "solver_steps", "rhs_evals"]
-            out["final"].update(zip(ints, s.getInteger([vr[n] for n in ints])))
-        except FMICallException as e:
+            out["final"] = dict(zip(FINAL_REALS, inst.reals(FINAL_REALS)))
+            out["final"].update(zip(FINAL_INTS, inst.ints(FINAL_INTS)))
+        except FmuError as e:
             out["get_exception"] = str(e)
-        out["messages"] = [m for m in messages if m[0] >= 1][-8:]
-        try:
-            if out["stage"] != "init":
-                s.terminate()
-        except FMICallException:
-            pass
-        s.freeInstance()
+        out["messages"] = [list(m) for m in inst.messages if m[0] >= 1][-8:]
+        inst.used = out["stage"] != "init"  # fmi2Terminate only after initialisation
+        inst.close()
         return out
 
 

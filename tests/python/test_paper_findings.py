@@ -23,7 +23,7 @@ PAPER_JUMP_SPEEDS = [1950, 2000, 2050]  # 100 N.m through mode 3 (paper Fig. 9)
 
 
 @pytest.fixture(scope="module")
-def tables(fmu_path, model_description, tmp_path_factory):
+def tables(fmu_path, tmp_path_factory):
     out = tmp_path_factory.mktemp("findings")
     swapped = study.swapped_lubricant(out)
     g1 = {"gear_set": 1, "lubricant": 1}
@@ -31,11 +31,10 @@ def tables(fmu_path, model_description, tmp_path_factory):
     pts += sweep.grid({**g1, "T_s": 100, "lubricant_file": swapped}, {"speed_rpm": LUB_SPEEDS})
     pts += sweep.grid(g1, {"T_s": [*T_LOW, *T_HIGH], "speed_rpm": MODE2_SPEEDS + MODE3_SPEEDS})
     pts += sweep.grid({"lubricant": 1, "T_s": 100}, {"gear_set": [2, 3], "speed_rpm": SET_SPEEDS})
-    md = model_description
-    pts = study.unique(sweep.complete(md, pts))
+    pts = study.unique(sweep.complete(pts))
     sweeps = [({k: v for k, v in p.items() if k != "speed_rpm"}, s)
-              for p, s in ((sweep.complete(md, [{**g1, "T_s": 50}])[0], JUMP_SPEEDS),
-                           (sweep.complete(md, [{**g1, "T_s": 100}])[0], PAPER_JUMP_SPEEDS))]
+              for p, s in ((sweep.complete([{**g1, "T_s": 50}])[0], JUMP_SPEEDS),
+                           (sweep.complete([{**g1, "T_s": 100}])[0], PAPER_JUMP_SPEEDS))]
     settings, fmu = steady.Settings(), parallel.FmuRef(fmu_path)
     with parallel.executor(workers=2) as client:  # both cores: ~10 s CPU each
         cont, points = sweep.execute([sweep.SweepsPlan(sweeps, out, fmu, settings),

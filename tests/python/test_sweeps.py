@@ -23,11 +23,6 @@ def inst(fmu_path):
     i.close()
 
 
-@pytest.fixture(scope="module")
-def md(model_description):
-    return model_description
-
-
 # ---------------------------------------------------------------------------- grids
 def test_parse_values_and_grid():
     assert sweep.parse_values("1000:2000:250") == [1000, 1250, 1500, 1750, 2000]
@@ -37,20 +32,20 @@ def test_parse_values_and_grid():
     assert len(pts) == 6 and all(p["gear_set"] == 2 for p in pts)
 
 
-def test_points_are_normalised_so_equal_points_get_equal_keys(md):
-    a = sweep.complete(md, [{"friction_model": 4, "T_s": 100, "speed_rpm": 2000}])[0]
-    b = sweep.complete(md, [{"friction_model": "ehl_thermal", "T_s": 100.0}])[0]
+def test_points_are_normalised_so_equal_points_get_equal_keys():
+    a = sweep.complete([{"friction_model": 4, "T_s": 100, "speed_rpm": 2000}])[0]
+    b = sweep.complete([{"friction_model": "ehl_thermal", "T_s": 100.0}])[0]
     assert a == b and results.point_key(a) == results.point_key(b)
     assert a["lubricant_file"] == "" and a["T_bath"] == pytest.approx(313.15)
     with pytest.raises(ValueError, match="friction_model"):
-        normalize(md, {"friction_model": "magic"})
+        normalize({"friction_model": "magic"})
 
 
 # ---------------------------------------------------------------------------- one instance
-def test_reset_between_points_reproduces_a_fresh_instance(inst, fmu_path, md):
-    other = sweep.complete(md, [{"gear_set": 2, "lubricant": 2, "T_s": 300, "speed_rpm": 3000,
+def test_reset_between_points_reproduces_a_fresh_instance(inst, fmu_path):
+    other = sweep.complete([{"gear_set": 2, "lubricant": 2, "T_s": 300, "speed_rpm": 3000,
                                  "friction_model": "coulomb", "T_bath": 353.15}])[0]
-    point = sweep.complete(md, [{"T_s": 100, "speed_rpm": 2000}])[0]
+    point = sweep.complete([{"T_s": 100, "speed_rpm": 2000}])[0]
     steady.run_point(inst, other, QUICK)
     reused, _ = steady.run_point(inst, point, QUICK)
     fresh_inst = Instance(fmu_path)
@@ -96,8 +91,8 @@ def test_continuation_visits_speeds_up_then_down(inst):
 
 
 # ---------------------------------------------------------------------------- runs, resume
-def test_interrupted_run_keeps_its_results_and_resumes(tmp_path, fmu_path, md, monkeypatch):
-    pts = sweep.complete(md, sweep.grid({"T_s": 100}, {"speed_rpm": [2000, 3000, 4000]}))
+def test_interrupted_run_keeps_its_results_and_resumes(tmp_path, fmu_path, monkeypatch):
+    pts = sweep.complete(sweep.grid({"T_s": 100}, {"speed_rpm": [2000, 3000, 4000]}))
     fmu = parallel.FmuRef(fmu_path)
     calls = []
     real = sweep.point_task
@@ -125,8 +120,8 @@ def test_interrupted_run_keeps_its_results_and_resumes(tmp_path, fmu_path, md, m
     assert len(sweep.PointsPlan(pts, tmp_path, rebuilt, QUICK).tasks) == 3
 
 
-def test_failed_point_is_a_row_and_the_next_point_still_runs(tmp_path, fmu_path, md):
-    pts = sweep.complete(md, [{"T_s": 100, "speed_rpm": 2000,
+def test_failed_point_is_a_row_and_the_next_point_still_runs(tmp_path, fmu_path):
+    pts = sweep.complete([{"T_s": 100, "speed_rpm": 2000,
                                "lubricant_file": str(tmp_path / "missing.txt")},
                               {"T_s": 100, "speed_rpm": 2500}])
     fmu = parallel.FmuRef(fmu_path)
@@ -137,8 +132,8 @@ def test_failed_point_is_a_row_and_the_next_point_still_runs(tmp_path, fmu_path,
     assert len(sweep.PointsPlan(pts, tmp_path, fmu, QUICK).tasks) == 1  # failures are retried
 
 
-def test_dask_local_cluster_matches_the_serial_run(tmp_path, fmu_path, md):
-    pts = sweep.complete(md, sweep.grid({"T_s": 50}, {"speed_rpm": [1500, 2500, 3500, 4500]}))
+def test_dask_local_cluster_matches_the_serial_run(tmp_path, fmu_path):
+    pts = sweep.complete(sweep.grid({"T_s": 50}, {"speed_rpm": [1500, 2500, 3500, 4500]}))
     fmu = parallel.FmuRef(fmu_path)
     serial = sweep.run_points(pts, tmp_path / "serial", fmu, None, QUICK)
     with parallel.executor(workers=2) as client:
