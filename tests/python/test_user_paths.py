@@ -42,7 +42,7 @@ def test_data_file_rules(user_dir):
 
 
 def test_sweep_points_carry_absolute_files(user_dir, model_description):
-    point = normalize(model_description, {"lubricant_file": "my.txt", "gear_set_file": ""})
+    point = normalize({"lubricant_file": "my.txt", "gear_set_file": ""})
     assert point == {"lubricant_file": str(user_dir / "my.txt"), "gear_set_file": ""}
 
 
