@@ -251,7 +251,7 @@ const hg_var_info *hg_first_nonfinite(const hg_instance *c, int calculated_too)
     return NULL;
 }
 
-static double *input_slot(hg_dyn_inputs *u, const char *name)
+static double *input_slot(hg_inputs *u, const char *name)
 {
     if (strcmp(name, "T_s") == 0) return &u->T_s;
     if (strcmp(name, "T_w") == 0) return &u->T_w;
@@ -263,7 +263,7 @@ static double *input_slot(hg_dyn_inputs *u, const char *name)
 /* The first time derivative the host gave for an input (0 when none). */
 static double derivative_of(const hg_instance *c, const hg_var_info *info)
 {
-    const double *d = input_slot((hg_dyn_inputs *)&c->input_der, info->name);
+    const double *d = input_slot((hg_inputs *)&c->input_der, info->name);
     return d ? *d : 0.0;
 }
 

@@ -16,7 +16,7 @@ typedef struct {
     double start_time;
     int stop_defined;
     double stop_time;
-    hg_dyn_inputs input_der;
+    hg_inputs input_der;
     hg_vars vars;  /* strings owned by the snapshot */
     hg_runtime rt; /* meaningful when set_up */
 } hg_snapshot;
@@ -186,7 +186,7 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component comp, fmi2FMUstate state, fmi2Byt
 /* A deserialized snapshot comes from outside: check what would make it unsafe or meaningless. */
 static int header_valid(const hg_snapshot *s)
 {
-    const hg_dyn_inputs *d = &s->input_der;
+    const hg_inputs *d = &s->input_der;
     if (s->state != ST_INSTANTIATED && s->state != ST_INITIALIZATION &&
         s->state != ST_STEP_COMPLETE && s->state != ST_TERMINATED && s->state != ST_ERROR)
         return 0;

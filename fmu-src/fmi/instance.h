@@ -29,7 +29,7 @@ typedef struct {
     double start_time;
     int stop_defined;        /* fmi2SetupExperiment gave a stop time: no step may pass it */
     double stop_time;
-    hg_dyn_inputs input_der; /* first derivatives for the next step */
+    hg_inputs input_der; /* first derivatives for the next step */
     hg_model *model;
     int set_up; /* the model is set up for the current parameters and initial inputs */
 } hg_instance;

@@ -43,7 +43,7 @@ static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn
 
 /* Friction torques from the sliding direction (physics 9.1): T_fp w_p + T_fg w_g = -P_loss.
  * Pairs carry |W_t|: on the coast flank the drive flank's contact data stand in for its own. */
-static void pair_friction(const hg_dyn_params *p, const hg_dyn_inputs *u, const double *y,
+static void pair_friction(const hg_dyn_params *p, const hg_inputs *u, const double *y,
                           int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
     int k, with_contact = p->friction.model != HG_FRICTION_MODEL_NONE || all_pairs;
@@ -75,7 +75,7 @@ static void pair_friction(const hg_dyn_params *p, const hg_dyn_inputs *u, const 
 
 /* The map level: the loss (1 - eta) of the power entering from the driving side, as a torque on
  * the pinion, so that T_fp w_p = -P_loss exactly. */
-static void map_loss(const hg_dyn_params *p, const hg_dyn_inputs *u, const double *y,
+static void map_loss(const hg_dyn_params *p, const hg_inputs *u, const double *y,
                      hg_dyn_eval *ev)
 {
     double w_p = y[HG_Y_W_P], T_1 = shaft1_torque(p, y), T_2p = shaft2_torque(p, y) / p->ratio;
@@ -87,7 +87,7 @@ static void map_loss(const hg_dyn_params *p, const hg_dyn_inputs *u, const doubl
     ev->P_loss = T_loss * w_p * w_p / s;
 }
 
-static void losses(const hg_dyn_params *p, const hg_dyn_inputs *u, const double *y,
+static void losses(const hg_dyn_params *p, const hg_inputs *u, const double *y,
                    int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
     if (p->friction.model == HG_FRICTION_MODEL_MAP)
@@ -99,7 +99,7 @@ static void losses(const hg_dyn_params *p, const hg_dyn_inputs *u, const double 
 /* Rigid mesh: the pinion-gear body's acceleration and the mesh load it implies. Friction needs
  * the load and changes the acceleration: one pass from the frictionless load suffices (the
  * friction torques change W_t by a fraction mu of the inertial part). */
-static void rigid_mesh(const hg_dyn_params *p, const hg_dyn_inputs *u, const double *y,
+static void rigid_mesh(const hg_dyn_params *p, const hg_inputs *u, const double *y,
                        int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
     double i = p->ratio, J = p->I_p + p->I_g / (i * i);
@@ -111,7 +111,7 @@ static void rigid_mesh(const hg_dyn_params *p, const hg_dyn_inputs *u, const dou
     ev->W_t = (p->I_g * ev->acc_p / i + T_2 - ev->T_fg) / ev->R_g;
 }
 
-static void efficiency(const double *y, const hg_dyn_inputs *u, hg_dyn_eval *ev)
+static void efficiency(const double *y, const hg_inputs *u, hg_dyn_eval *ev)
 {
     double P_drive = u->T_s * y[HG_Y_W_S], P_coast = -ev->T_w * y[HG_Y_W_W];
     ev->P_in = P_drive > P_coast ? P_drive : P_coast;
@@ -124,7 +124,7 @@ static void efficiency(const double *y, const hg_dyn_inputs *u, hg_dyn_eval *ev)
     }
 }
 
-void hg_dyn_evaluate(const hg_dyn_params *p, const hg_dyn_inputs *u, int mode, const double *y,
+void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const double *y,
                      int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
     double d1 = y[HG_Y_W_S] - y[HG_Y_W_P], d2 = y[HG_Y_W_G] - y[HG_Y_W_W];
@@ -147,7 +147,7 @@ void hg_dyn_evaluate(const hg_dyn_params *p, const hg_dyn_inputs *u, int mode, c
     }
 }
 
-void hg_dyn_derivatives(const hg_dyn_params *p, const hg_dyn_inputs *u, const double *y,
+void hg_dyn_derivatives(const hg_dyn_params *p, const hg_inputs *u, const double *y,
                         const hg_dyn_eval *ev, double *ydot)
 {
     double T_1 = shaft1_torque(p, y), T_2 = shaft2_torque(p, y);

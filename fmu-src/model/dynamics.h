@@ -5,6 +5,7 @@
 #ifndef HG_DYNAMICS_H
 #define HG_DYNAMICS_H
 
+#include "hg_vars.h" /* hg_inputs: the FMU inputs at the evaluation time */
 #include "model/backlash.h"
 #include "model/effmap.h"
 #include "model/friction.h"
@@ -39,10 +40,6 @@ typedef struct {
 } hg_dyn_params;
 
 typedef struct {
-    double T_s, T_w, T_bath, w_set; /* the FMU inputs at the evaluation time */
-} hg_dyn_inputs;
-
-typedef struct {
     hg_mesh_point mesh;
     double R_g;        /* gear contact radius R_p N_g/N_p [m] (D4) */
     double f;          /* backlash function f(x) [m] */
@@ -60,11 +57,11 @@ typedef struct {
 
 /* Evaluates everything at state y in contact mode `mode`. Pair quantities are computed when the
  * friction model needs them or `all_pairs` is set (for outputs). T_c_warm: per-pair warm start. */
-void hg_dyn_evaluate(const hg_dyn_params *p, const hg_dyn_inputs *u, int mode, const double *y,
+void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const double *y,
                      int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev);
 
 /* dy/dt from an evaluation at y. */
-void hg_dyn_derivatives(const hg_dyn_params *p, const hg_dyn_inputs *u, const double *y,
+void hg_dyn_derivatives(const hg_dyn_params *p, const hg_inputs *u, const double *y,
                         const hg_dyn_eval *ev, double *ydot);
 
 /* Kinetic plus elastic energy at y [J]. */

@@ -2,7 +2,7 @@
 #ifndef HG_FRICTION_H
 #define HG_FRICTION_H
 
-#include "model/pair_contact.h"
+#include "tribo/pair_contact.h"
 #include "tribo/ehl.h"
 
 typedef struct {

@@ -6,7 +6,7 @@
 #include <stddef.h>
 
 #include "model/fourier.h"
-#include "model/pair_contact.h"
+#include "tribo/pair_contact.h"
 
 typedef struct {
     char name[128];

@@ -1,91 +1,101 @@
-/* Model set-up: data files, parameters, modal damping, tolerances and the initial state. */
-#include <stdio.h>
-#include <string.h>
+/* Model set-up: see setup.h. */
+#include "model/setup.h"
 
-#include "model/hypoid_internal.h"
+#include <stdio.h>
+
+#include "io/errmsg.h"
 #include "model/modal.h"
 
 #define GOVERNOR_ZETA 0.7     /* damping ratio of the speed governor's closed loop */
+#define STEPS_PER_MESH 30     /* CVODE's automatic max_step: 1/30 of a mesh period (physics 8.8) */
 
 /* user_file if set (absolute, or relative to the resources), else resources/<builtin>. */
-static int resolve_path(const hg_model *m, const char *user_file, const char *builtin, char *path,
-                        size_t len, char *err, size_t errlen)
+static int resolve_path(const char *resource_dir, const char *user_file, const char *builtin,
+                        char *path, size_t len, char *err, size_t errlen)
 {
     int n;
     if (user_file && *user_file)
         n = user_file[0] == '/' ? snprintf(path, len, "%s", user_file)
-                                : snprintf(path, len, "%s/%s", m->resource_dir, user_file);
+                                : snprintf(path, len, "%s/%s", resource_dir, user_file);
     else
-        n = snprintf(path, len, "%s/%s", m->resource_dir, builtin);
+        n = snprintf(path, len, "%s/%s", resource_dir, builtin);
     if (n < 0 || (size_t)n >= len) {
-        snprintf(err, errlen, "data file path is too long: '%.80s...'", path);
+        hg_errorf(err, errlen, "data file path is too long: '%.80s...'", path);
         return -1;
     }
     return 0;
 }
 
-static int load_gearset(hg_model *m, const hg_vars *v, char *err, size_t errlen)
+static int load_gearset(hg_setup *s, const char *resource_dir, const hg_vars *v, char *err,
+                        size_t errlen)
 {
     char path[4096], builtin[64], why[HG_ERRLEN];
     snprintf(builtin, sizeof builtin, "gearsets/gearset%d.txt", v->gear_set);
-    if (resolve_path(m, v->gear_set_file, builtin, path, sizeof path, err, errlen)) return -1;
-    if (hg_gearset_load(path, &m->gear, why, sizeof why)) {
-        snprintf(err, errlen, "%s = '%s': %s", v->gear_set_file[0] ? "gear_set_file" : "gear_set",
-                 v->gear_set_file[0] ? v->gear_set_file : builtin, why);
+    if (resolve_path(resource_dir, v->gear_set_file, builtin, path, sizeof path, err, errlen))
+        return -1;
+    if (hg_gearset_load(path, &s->gear, why, sizeof why)) {
+        hg_errorf(err, errlen, "%s = '%s': %s", v->gear_set_file[0] ? "gear_set_file" : "gear_set",
+                  v->gear_set_file[0] ? v->gear_set_file : builtin, why);
         return -1;
     }
-    hg_series_scale(&m->gear.k_m, v->k_m_scale);
-    hg_series_scale(&m->gear.e_0, v->e_0_scale);
+    hg_series_scale(&s->gear.k_m, v->k_m_scale);
+    hg_series_scale(&s->gear.e_0, v->e_0_scale);
     return 0;
 }
 
-static int load_lubricant(hg_model *m, const hg_vars *v, char *err, size_t errlen)
+static int load_lubricant(hg_setup *s, const char *resource_dir, const hg_vars *v, char *err,
+                          size_t errlen)
 {
     static const char *const builtin[] = {"lubricants/OS265962.txt", "lubricants/OS265963.txt"};
     const char *name = builtin[v->lubricant == 2];
     char path[4096], why[HG_ERRLEN];
-    if (resolve_path(m, v->lubricant_file, name, path, sizeof path, err, errlen)) return -1;
-    if (hg_lubricant_load(path, &m->lub, why, sizeof why)) {
-        snprintf(err, errlen, "%s = '%s': %s", v->lubricant_file[0] ? "lubricant_file" : "lubricant",
-                 v->lubricant_file[0] ? v->lubricant_file : name, why);
+    if (resolve_path(resource_dir, v->lubricant_file, name, path, sizeof path, err, errlen))
+        return -1;
+    if (hg_lubricant_load(path, &s->lub, why, sizeof why)) {
+        hg_errorf(err, errlen, "%s = '%s': %s",
+                  v->lubricant_file[0] ? "lubricant_file" : "lubricant",
+                  v->lubricant_file[0] ? v->lubricant_file : name, why);
         return -1;
     }
     return 0;
 }
 
 /* The map level: a rigid gear whose efficiency comes from a map of the full model. */
-static int load_map(hg_model *m, const hg_vars *v, char *err, size_t errlen)
+static int load_map(hg_setup *s, const char *resource_dir, const hg_vars *v, char *err,
+                    size_t errlen)
 {
     char path[4096], builtin[96], why[HG_ERRLEN];
-    hg_effmap_free(&m->map);
-    m->p.map = NULL;
+    hg_effmap_free(&s->map);
+    s->p.map = NULL;
     if (v->friction_model != HG_FRICTION_MODEL_MAP) return 0;
     if (v->mesh_model != HG_MESH_MODEL_RIGID) {
-        snprintf(err, errlen, "friction_model = map describes the whole gear's losses: it needs "
-                 "mesh_model = rigid (mesh_model is %d)", v->mesh_model);
+        hg_errorf(err, errlen, "friction_model = map describes the whole gear's losses: it needs "
+                  "mesh_model = rigid (mesh_model is %d)", v->mesh_model);
         return -1;
     }
     if (!v->efficiency_map_file[0] && v->lubricant_file[0]) {
-        snprintf(err, errlen, "friction_model = map with lubricant_file = '%s' needs an "
-                 "efficiency_map_file made for that lubricant (hypoid effmap)", v->lubricant_file);
+        hg_errorf(err, errlen, "friction_model = map with lubricant_file = '%s' needs an "
+                  "efficiency_map_file made for that lubricant (hypoid effmap)", v->lubricant_file);
         return -1;
     }
     snprintf(builtin, sizeof builtin, "maps/gearset%d_%s.txt", v->gear_set,
              v->lubricant == 2 ? "OS265963" : "OS265962");
-    if (resolve_path(m, v->efficiency_map_file, builtin, path, sizeof path, err, errlen)) return -1;
-    if (hg_effmap_load(path, &m->map, why, sizeof why)) {
-        snprintf(err, errlen, "%s = '%s': %s",
-                 v->efficiency_map_file[0] ? "efficiency_map_file" : "built-in efficiency map",
-                 v->efficiency_map_file[0] ? v->efficiency_map_file : builtin, why);
+    if (resolve_path(resource_dir, v->efficiency_map_file, builtin, path, sizeof path, err,
+                     errlen))
+        return -1;
+    if (hg_effmap_load(path, &s->map, why, sizeof why)) {
+        hg_errorf(err, errlen, "%s = '%s': %s",
+                  v->efficiency_map_file[0] ? "efficiency_map_file" : "built-in efficiency map",
+                  v->efficiency_map_file[0] ? v->efficiency_map_file : builtin, why);
         return -1;
     }
-    m->p.map = &m->map;
+    s->p.map = &s->map;
     return 0;
 }
 
-static void ehl_params(hg_model *m, const hg_vars *v)
+static void ehl_params(hg_setup *s, const hg_vars *v)
 {
-    hg_ehl_params *e = &m->p.friction.ehl;
+    hg_ehl_params *e = &s->p.friction.ehl;
     hg_ehl_params_default(e);
     e->E = v->E;
     e->nu = v->nu;
@@ -104,10 +114,10 @@ static void ehl_params(hg_model *m, const hg_vars *v)
     e->roelands_Z = v->roelands_z == HG_ROELANDS_Z_EXACT ? HG_Z_EXACT : HG_Z_SIMPLE;
     e->shear_pressure = v->shear_pressure == HG_SHEAR_PRESSURE_MAX ? HG_SHEAR_P_MAX : HG_SHEAR_P_MEAN;
     e->thermal = v->friction_model == HG_FRICTION_MODEL_EHL_THERMAL;
-    m->p.friction.lub = &m->lub;
+    s->p.friction.lub = &s->lub;
 }
 
-static int damping(hg_model *m, hg_vars *v, char *err, size_t errlen)
+static int damping(hg_setup *s, const hg_logger *lg, hg_vars *v, char *err, size_t errlen)
 {
     hg_modal_input in;
     hg_modes modes;
@@ -120,35 +130,35 @@ static int damping(hg_model *m, hg_vars *v, char *err, size_t errlen)
     in.I_w = v->I_w;
     in.k_t1 = v->k_t1;
     in.k_t2 = v->k_t2;
-    in.k_m = m->p.k_m0;
-    in.R_p = m->p.R_p0;
-    in.R_g = m->p.R_p0 * m->p.ratio;
+    in.k_m = s->p.k_m0;
+    in.R_p = s->p.R_p0;
+    in.R_g = s->p.R_p0 * s->p.ratio;
     zeta[0] = v->zeta_2;
     zeta[1] = v->zeta_3;
     zeta[2] = v->zeta_4;
     if (hg_modal_analysis(&in, &modes, why, sizeof why) ||
         hg_modal_dampers(&in, zeta, &d, why, sizeof why)) {
-        snprintf(err, errlen, "modal damping: %s", why);
+        hg_errorf(err, errlen, "modal damping: %s", why);
         return -1;
     }
     if (d.used_fallback)
-        hg_model_log(m, "logStatusWarning",
+        hg_logf(lg, "logStatusWarning",
               "modal damping ratios (%g, %g, %g) cannot all be met with non-negative dampers; "
               "least-squares fallback achieves (%.4f, %.4f, %.4f)",
               zeta[0], zeta[1], zeta[2], d.zeta_achieved[0], d.zeta_achieved[1],
               d.zeta_achieved[2]);
-    m->p.c_t1 = v->c_t1 = d.c_t1;
-    m->p.c_m = v->c_m = d.c;
-    m->p.c_t2 = v->c_t2 = d.c_t2;
+    s->p.c_t1 = v->c_t1 = d.c_t1;
+    s->p.c_m = v->c_m = d.c;
+    s->p.c_t2 = v->c_t2 = d.c_t2;
     v->f_2 = modes.f_hz[1];
     v->f_3 = modes.f_hz[2];
     v->f_4 = modes.f_hz[3];
     return 0;
 }
 
-static void dynamics_params(hg_model *m, const hg_vars *v)
+static void dynamics_params(hg_setup *s, const hg_vars *v)
 {
-    hg_dyn_params *p = &m->p;
+    hg_dyn_params *p = &s->p;
     double J, w_n;
     p->I_s = v->I_s;
     p->I_p = v->I_p;
@@ -161,26 +171,26 @@ static void dynamics_params(hg_model *m, const hg_vars *v)
     p->backlash.eps = p->mesh == HG_MESH_MODEL_VARYING && v->backlash_model == HG_BACKLASH_MODEL_SMOOTHED
                           ? v->backlash_smoothing
                           : 0.0;
-    p->k_m0 = m->gear.k_m.mean;
-    p->R_p0 = m->gear.R_p.mean;
-    p->ratio = (double)m->gear.N_g / m->gear.N_p;
-    p->gear = &m->gear;
+    p->k_m0 = s->gear.k_m.mean;
+    p->R_p0 = s->gear.R_p.mean;
+    p->ratio = (double)s->gear.N_g / s->gear.N_p;
+    p->gear = &s->gear;
     p->friction.model = v->friction_model;
     p->friction.mu_const = v->mu_const;
     p->speed_governor = v->load_mode == HG_LOAD_MODE_SPEED;
     /* PI governor on the wheel speed, tuned on the rigid-body inertia seen at the wheel */
     J = (v->I_s + v->I_p) * p->ratio * p->ratio + v->I_g + v->I_w;
-    w_n = TWO_PI * v->governor_bandwidth;
+    w_n = HG_TWO_PI * v->governor_bandwidth;
     p->K_p = 2.0 * GOVERNOR_ZETA * w_n * J;
     p->K_i = w_n * w_n * J;
 }
 
 /* Absolute tolerances: atol is on the DTE [m]; angles scale by 1/R, speeds by omega_4/R. */
-static void tolerances(hg_model *m, const hg_vars *v)
+static void tolerances(hg_setup *s, const hg_vars *v)
 {
-    double a = v->atol, R_p = m->p.R_p0, R_g = R_p * m->p.ratio, w4 = TWO_PI * v->f_4;
-    double E = a * m->p.k_m0 * 1e-4; /* energy: a force of k_m * 0.1 mm through a */
-    double *t = m->atol;
+    double a = v->atol, R_p = s->p.R_p0, R_g = R_p * s->p.ratio, w4 = HG_TWO_PI * v->f_4;
+    double E = a * s->p.k_m0 * 1e-4; /* energy: a force of k_m * 0.1 mm through a */
+    double *t = s->atol;
     t[HG_Y_TWIST1] = t[HG_Y_PHI_P] = a / R_p;
     t[HG_Y_TWIST2] = t[HG_Y_GOV] = a / R_g;
     t[HG_Y_X] = a;
@@ -188,74 +198,31 @@ static void tolerances(hg_model *m, const hg_vars *v)
     t[HG_Y_W_G] = t[HG_Y_W_W] = a * w4 / R_g;
     t[HG_Y_E_IN] = t[HG_Y_E_OUT] = t[HG_Y_E_FRIC] = t[HG_Y_E_DAMP] = t[HG_Y_E_EXC] = E;
     t[HG_Y_ETA2] = 1e-9;
-    m->rtol = v->rtol;
-    m->fixed_step = v->solver == HG_SOLVER_NEWMARK;
-    m->max_step = v->max_step;
-    m->f_max = v->f_4;
-    m->steps_per_mesh = m->fixed_step ? v->steps_per_mesh_cycle : STEPS_PER_MESH;
+    s->rtol = v->rtol;
+    s->fixed_step = v->solver == HG_SOLVER_NEWMARK;
+    s->max_step = v->max_step;
+    s->f_max = v->f_4;
+    s->steps_per_mesh = s->fixed_step ? v->steps_per_mesh_cycle : STEPS_PER_MESH;
 }
 
-void hg_model_inputs(const hg_vars *v, hg_dyn_inputs *u)
+int hg_setup_load(hg_setup *s, const char *resource_dir, const hg_logger *lg, hg_vars *v,
+                  char *err, size_t errlen)
 {
-    u->T_s = v->T_s;
-    u->T_w = v->T_w;
-    u->T_bath = v->T_bath;
-    u->w_set = v->w_set;
-}
-
-/* Static equilibrium at speed (physics 8.6): shafts twisted by their torques, mesh deflected by
- * W_t / k_m beyond the backlash on the loaded flank. */
-static void initial_state(hg_model *m, const hg_vars *v, double t0)
-{
-    hg_runtime *rt = &m->rt;
-    hg_mesh_point mesh;
-    double *y = rt->y, T_w = v->load_mode == HG_LOAD_MODE_SPEED ? v->T_s * m->p.ratio : v->T_w;
-    int k;
-    memset(rt, 0, sizeof *rt);
-    rt->t = rt->t_u0 = t0;
-    hg_model_inputs(v, &rt->u0);
-    rt->u_end = rt->u0;
-    if (m->p.mesh == HG_MESH_MODEL_VARYING)
-        hg_gearset_mesh(&m->gear, 0.0, &mesh);
-    else {
-        mesh.k_m = m->p.k_m0;
-        mesh.R_p = m->p.R_p0;
-    }
-    y[HG_Y_TWIST1] = v->T_s / v->k_t1;
-    y[HG_Y_TWIST2] = T_w / v->k_t2;
-    if (m->p.mesh != HG_MESH_MODEL_RIGID)
-        y[HG_Y_X] = v->T_s / (mesh.R_p * mesh.k_m) +
-                    (v->T_s > 0 ? m->p.backlash.b : v->T_s < 0 ? -m->p.backlash.b : 0.0);
-    y[HG_Y_W_S] = y[HG_Y_W_P] = v->w_p0;
-    y[HG_Y_W_G] = y[HG_Y_W_W] = v->w_p0 / m->p.ratio;
-    rt->mode = hg_backlash_mode(y[HG_Y_X], m->p.backlash.b);
-    for (k = 0; k < HG_MAX_PAIRS; k++) rt->T_c_warm[k] = -1.0;
-    rt->eta_cycle = 1.0;
-    rt->restart = 1;
-}
-
-int hg_model_setup(hg_model *m, hg_vars *v, double t0, char *err, size_t errlen)
-{
-    if (load_gearset(m, v, err, errlen) || load_lubricant(m, v, err, errlen)) return -1;
-    dynamics_params(m, v);
-    ehl_params(m, v);
-    if (load_map(m, v, err, errlen)) return -1;
-    if (damping(m, v, err, errlen)) return -1;
-    v->R_p0 = m->p.R_p0;
-    v->k_m0 = m->p.k_m0;
-    v->ratio = m->p.ratio;
-    v->N_p = m->gear.N_p;
-    v->N_g = m->gear.N_g;
-    tolerances(m, v);
-    m->window_angle = v->n_avg_cycles * TWO_PI / m->gear.N_p;
-    initial_state(m, v, t0);
-    if (hg_model_make_solver(m, v, err, errlen)) return -1;
-    hg_model_log(m, "logEvents",
-          "set-up: %s, i = %.4f, k_m0 = %.4g N/m, R_p0 = %.3f mm, modes %.1f / %.1f / %.1f Hz, "
-          "dampers c_t1 = %.4g, c = %.4g, c_t2 = %.4g; eta_cycle holds 1 until the first window "
-          "of %d mesh cycles completes",
-          m->gear.name, m->p.ratio, m->p.k_m0, 1e3 * m->p.R_p0, v->f_2, v->f_3, v->f_4,
-          m->p.c_t1, m->p.c_m, m->p.c_t2, v->n_avg_cycles);
-    hg_model_write_outputs(m, v);
+    if (load_gearset(s, resource_dir, v, err, errlen) ||
+        load_lubricant(s, resource_dir, v, err, errlen))
+        return -1;
+    dynamics_params(s, v);
+    ehl_params(s, v);
+    if (load_map(s, resource_dir, v, err, errlen)) return -1;
+    if (damping(s, lg, v, err, errlen)) return -1;
+    v->R_p0 = s->p.R_p0;
+    v->k_m0 = s->p.k_m0;
+    v->ratio = s->p.ratio;
+    v->N_p = s->gear.N_p;
+    v->N_g = s->gear.N_g;
+    tolerances(s, v);
+    s->window_angle = v->n_avg_cycles * HG_TWO_PI / s->gear.N_p;
     return 0;
 }
+
+void hg_setup_free(hg_setup *s) { hg_effmap_free(&s->map); }

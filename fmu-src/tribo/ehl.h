@@ -1,6 +1,6 @@
 /* Mixed-EHL conjunctional friction and thermal model of one hypoid flank pair (paper section
  * 2.2, eqs. 5-19; physics.md 1-7). The entry point consumes the seam struct hg_pair_contact and
- * fills hg_pair_friction (model/pair_contact.h).
+ * fills hg_pair_friction (tribo/pair_contact.h).
  *
  * Pure: the result depends only on the arguments. The only state carried between calls is the
  * caller's warm start *T_c_warm. No caching struct is needed: the full thermal evaluation costs
@@ -9,9 +9,9 @@
 #ifndef HG_TRIBO_EHL_H
 #define HG_TRIBO_EHL_H
 
-#include "model/pair_contact.h"
 #include "tribo/contact.h"
 #include "tribo/lubricant.h"
+#include "tribo/pair_contact.h"
 
 typedef enum { HG_Z_SIMPLE = 0, HG_Z_EXACT = 1 } hg_roelands_z_mode;
 typedef enum { HG_SHEAR_P_MEAN = 0, HG_SHEAR_P_MAX = 1 } hg_shear_pressure;

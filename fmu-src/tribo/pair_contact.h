@@ -1,6 +1,7 @@
-/* The seam between the gear dynamics and the friction models: what the dynamics knows about one
- * flank pair in mesh, and what a friction model returns for it. Frame (physics.md §1): x along
- * the minor axis of the contact ellipse (across the contact line), y along the major axis. */
+/* The tribology layer's view of one flank pair in mesh: what a friction model needs to know of
+ * it (the model's dynamics fills it in) and what the friction model returns. Frame (physics.md
+ * §1): x along the minor axis of the contact ellipse (across the contact line), y along the major
+ * axis. */
 #ifndef HG_PAIR_CONTACT_H
 #define HG_PAIR_CONTACT_H
 

@@ -1,0 +1,74 @@
+/* The model's outputs: see outputs.h. */
+#include "model/outputs.h"
+
+#include <string.h>
+
+static void write_pairs(hg_vars *v, const hg_dyn_eval *ev)
+{
+    int k;
+    for (k = 0; k < HG_MAX_PAIRS; k++) {
+        const hg_pair_friction *f = &ev->pair[k];
+        v->pair_W[k] = ev->W_pair[k];
+        v->pair_mu[k] = f->mu;
+        v->pair_F_v[k] = f->F_v;
+        v->pair_F_b[k] = f->F_b;
+        v->pair_h_c[k] = f->h_c;
+        v->pair_lambda[k] = f->lambda;
+        v->pair_T_c[k] = f->T_c;
+        v->pair_u_e[k] = f->u_e;
+        v->pair_V_s[k] = f->V_s;
+        v->pair_R_e[k] = f->R_e;
+        v->pair_R_s[k] = f->R_s;
+        v->pair_p_h[k] = f->p_h;
+        v->pair_g_V[k] = f->g_V;
+        v->pair_g_E[k] = f->g_E;
+    }
+}
+
+static int clamp_int(long n) { return n > 2147483647L ? 2147483647 : (int)n; }
+
+/* The contact output: the event-tracked mode, or the one the deflection says. */
+static int contact(const hg_dyn_params *p, const hg_runtime *rt, const hg_dyn_eval *ev)
+{
+    if (hg_stepping_contact_events(p)) return rt->mode;
+    if (p->mesh == HG_MESH_MODEL_VARYING) return hg_backlash_mode(rt->y[HG_Y_X], p->backlash.b);
+    return ev->W_t >= 0.0 ? HG_MODE_DRIVE : HG_MODE_BACK;
+}
+
+void hg_outputs_write(const hg_setup *s, const hg_runtime *rt, long steps, long evals,
+                      hg_vars *v)
+{
+    const double *y = rt->y;
+    hg_inputs u;
+    hg_dyn_eval ev;
+    double warm[HG_MAX_PAIRS];
+    memcpy(warm, rt->T_c_warm, sizeof warm); /* outputs must not perturb the integration */
+    hg_stepping_inputs_at(rt, rt->t, &u);
+    hg_dyn_evaluate(&s->p, &u, rt->mode, y, 1, warm, &ev);
+    v->w_s = y[HG_Y_W_S];
+    v->w_p = y[HG_Y_W_P];
+    v->w_g = y[HG_Y_W_G];
+    v->w_w = y[HG_Y_W_W];
+    v->DTE = y[HG_Y_X];
+    v->W_t = ev.W_t;
+    v->T_fp = ev.T_fp;
+    v->T_fg = ev.T_fg;
+    v->P_loss = ev.P_loss;
+    v->P_in = ev.P_in;
+    v->eta = ev.eta;
+    v->eta_cycle = rt->eta_cycle;
+    v->P_loss_cycle = rt->P_loss_cycle;
+    v->T_w_out = ev.T_w;
+    v->k_m = ev.mesh.k_m;
+    v->contact = contact(&s->p, rt, &ev);
+    v->n_impacts = rt->n_impacts;
+    v->solver_steps = clamp_int(steps);
+    v->rhs_evals = clamp_int(evals);
+    v->E_in = y[HG_Y_E_IN];
+    v->E_out = y[HG_Y_E_OUT];
+    v->E_friction = y[HG_Y_E_FRIC];
+    v->E_damping = y[HG_Y_E_DAMP];
+    v->E_excitation = y[HG_Y_E_EXC];
+    v->E_stored = hg_dyn_stored_energy(&s->p, y, &ev);
+    write_pairs(v, &ev);
+}

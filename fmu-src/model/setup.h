@@ -1,0 +1,37 @@
+/* Model set-up from the FMU variables: the data files the parameters name, the dynamics and EHL
+ * parameters, the modal damping and the integration settings. Calls only downwards (data
+ * readers, modal analysis); the model object (hypoid.c) owns an hg_setup. */
+#ifndef HG_SETUP_H
+#define HG_SETUP_H
+
+#include <stddef.h>
+
+#include "hg_vars.h"
+#include "io/log.h"
+#include "model/dynamics.h"
+
+#define HG_TWO_PI 6.283185307179586
+
+typedef struct {
+    hg_gearset gear;
+    hg_lubricant lub;
+    hg_effmap map;        /* friction_model = map only */
+    hg_dyn_params p;      /* points into gear, lub and map */
+    double atol[HG_NY];
+    double rtol;
+    double max_step;      /* user's max_step, 0 = automatic */
+    int steps_per_mesh;   /* per mesh cycle: the fixed step (newmark) or the automatic max_step */
+    int fixed_step;       /* the solver takes fixed steps (newmark) */
+    double f_max;         /* highest natural frequency of the linearised system [Hz] */
+    double window_angle;  /* pinion angle of one averaging window [rad] */
+} hg_setup;
+
+/* Fills s from the parameters of v (data files relative to resource_dir) and writes the
+ * calculated parameters into v; warnings go to lg. s must be zeroed or set up before. */
+int hg_setup_load(hg_setup *s, const char *resource_dir, const hg_logger *lg, hg_vars *v,
+                  char *err, size_t errlen);
+
+/* Frees what hg_setup_load allocated. */
+void hg_setup_free(hg_setup *s);
+
+#endif

@@ -1,0 +1,170 @@
+/* Stepping helpers of the model object: see stepping.h. */
+#include "model/stepping.h"
+
+#include <math.h>
+#include <string.h>
+
+#define WRAP_PERIODS 1024     /* wrap the pinion angle after this many load-share periods */
+#define MAX_AUTO_STEP 1e-3    /* [s] */
+#define STEPS_PER_MODE 8      /* fixed steps per period of the highest natural mode, at least */
+
+/* Static equilibrium at speed (physics 8.6): shafts twisted by their torques, mesh deflected by
+ * W_t / k_m beyond the backlash on the loaded flank. */
+void hg_stepping_start(hg_runtime *rt, const hg_setup *s, const hg_vars *v, double t0)
+{
+    const hg_dyn_params *p = &s->p;
+    hg_mesh_point mesh;
+    double *y = rt->y, T_w = v->load_mode == HG_LOAD_MODE_SPEED ? v->T_s * p->ratio : v->T_w;
+    int k;
+    memset(rt, 0, sizeof *rt);
+    rt->t = rt->t_u0 = t0;
+    hg_vars_inputs(v, &rt->u0);
+    rt->u_end = rt->u0;
+    if (p->mesh == HG_MESH_MODEL_VARYING)
+        hg_gearset_mesh(&s->gear, 0.0, &mesh);
+    else {
+        mesh.k_m = p->k_m0;
+        mesh.R_p = p->R_p0;
+    }
+    y[HG_Y_TWIST1] = v->T_s / v->k_t1;
+    y[HG_Y_TWIST2] = T_w / v->k_t2;
+    if (p->mesh != HG_MESH_MODEL_RIGID)
+        y[HG_Y_X] = v->T_s / (mesh.R_p * mesh.k_m) +
+                    (v->T_s > 0 ? p->backlash.b : v->T_s < 0 ? -p->backlash.b : 0.0);
+    y[HG_Y_W_S] = y[HG_Y_W_P] = v->w_p0;
+    y[HG_Y_W_G] = y[HG_Y_W_W] = v->w_p0 / p->ratio;
+    rt->mode = hg_backlash_mode(y[HG_Y_X], p->backlash.b);
+    for (k = 0; k < HG_MAX_PAIRS; k++) rt->T_c_warm[k] = -1.0;
+    rt->eta_cycle = 1.0;
+    rt->restart = 1;
+}
+
+void hg_stepping_inputs_at(const hg_runtime *rt, double t, hg_inputs *u)
+{
+    double dt = t - rt->t_u0;
+    int k;
+    for (k = 0; k < HG_NUM_INPUTS; k++)
+        *hg_input(u, k) = hg_input_value(&rt->u0, k) + hg_input_value(&rt->du, k) * dt;
+}
+
+static int inputs_changed(const hg_inputs *a, const hg_inputs *b)
+{
+    int k;
+    for (k = 0; k < HG_NUM_INPUTS; k++)
+        if (hg_input_value(a, k) != hg_input_value(b, k)) return 1;
+    return 0;
+}
+
+/* Keep the pinion angle small (rtol acts on |phi_p|) by whole load-share periods. */
+static void wrap_angle(hg_runtime *rt, const hg_setup *s)
+{
+    double period = 3.0 * HG_TWO_PI / s->gear.N_p, shift;
+    if (fabs(rt->y[HG_Y_PHI_P]) < WRAP_PERIODS * period) return;
+    shift = period * floor(rt->y[HG_Y_PHI_P] / period);
+    rt->y[HG_Y_PHI_P] -= shift;
+    rt->win_phi0 -= shift;
+    rt->restart = 1;
+}
+
+void hg_stepping_begin(hg_runtime *rt, const hg_setup *s, const hg_inputs *u,
+                       const hg_inputs *du)
+{
+    if (inputs_changed(u, &rt->u_end) || inputs_changed(du, &rt->du)) rt->restart = 1;
+    rt->u0 = *u;
+    rt->du = *du;
+    rt->t_u0 = rt->t;
+    wrap_angle(rt, s);
+}
+
+/* Variable-step solvers: the user's max_step, or automatically 1/steps_per_mesh of a mesh period
+ * for the compliant meshes (physics 8.8; none for the rigid one). The fixed-step solver:
+ * steps_per_mesh_cycle per mesh period, never longer than the user's max_step nor than
+ * 1/STEPS_PER_MODE of the period of the highest natural mode, which a fixed step must resolve
+ * whatever the speed. */
+double hg_stepping_step_limit(const hg_runtime *rt, const hg_setup *s)
+{
+    double f_mesh = fabs(rt->y[HG_Y_W_P]) * s->gear.N_p / HG_TWO_PI, h;
+    if (!s->fixed_step && (s->max_step > 0.0 || s->p.mesh == HG_MESH_MODEL_RIGID))
+        return s->max_step;
+    h = f_mesh > 0.0 ? 1.0 / (s->steps_per_mesh * f_mesh) : MAX_AUTO_STEP;
+    h = fmin(h, MAX_AUTO_STEP);
+    if (s->fixed_step) {
+        h = fmin(h, 1.0 / (STEPS_PER_MODE * s->f_max));
+        if (s->max_step > 0.0) h = fmin(h, s->max_step);
+    }
+    return h;
+}
+
+int hg_stepping_contact_events(const hg_dyn_params *p)
+{
+    return p->mesh == HG_MESH_MODEL_VARYING && p->backlash.eps == 0.0;
+}
+
+void hg_stepping_roots(const hg_runtime *rt, const hg_setup *s, const double *y, double *g)
+{
+    int events = hg_stepping_contact_events(&s->p);
+    g[0] = events ? y[HG_Y_X] - s->p.backlash.b : 1.0;
+    g[1] = events ? y[HG_Y_X] + s->p.backlash.b : 1.0;
+    g[2] = y[HG_Y_PHI_P] - (rt->win_phi0 + s->window_angle);
+    g[3] = y[HG_Y_PHI_P] - (rt->win_phi0 - s->window_angle);
+}
+
+static const char *mode_name(int mode)
+{
+    return mode > 0 ? "drive" : mode < 0 ? "back" : "free";
+}
+
+void hg_stepping_contact_event(hg_runtime *rt, const hg_setup *s, const int *dir,
+                               const hg_logger *lg)
+{
+    int old = rt->mode;
+    /* dir[0]: root of x - b, dir[1]: root of x + b; +1 upwards, -1 downwards */
+    rt->mode = dir[0] > 0 ? HG_MODE_DRIVE : dir[1] < 0 ? HG_MODE_BACK : HG_MODE_FREE;
+    /* the root lies on the boundary: put x exactly there so the restart does not see it again */
+    rt->y[HG_Y_X] = dir[0] != 0 ? s->p.backlash.b : -s->p.backlash.b;
+    if (rt->mode != old) {
+        rt->n_impacts++;
+        hg_logf(lg, "logEvents", "t = %.9f s: mesh contact %s -> %s", rt->t, mode_name(old),
+                mode_name(rt->mode));
+    }
+}
+
+void hg_stepping_window_event(hg_runtime *rt, const hg_logger *lg)
+{
+    double T = rt->t - rt->win_t0;
+    if (T > 0.0) {
+        rt->eta_cycle = sqrt((rt->y[HG_Y_ETA2] - rt->win_eta2_0) / T);
+        rt->P_loss_cycle = (rt->y[HG_Y_E_FRIC] - rt->win_efric_0) / T;
+    }
+    rt->windows++;
+    hg_logf(lg, "logEvents", "t = %.6f s: averaging window %d complete: eta_cycle = %.6f, "
+            "P_loss_cycle = %.4g W", rt->t, rt->windows, rt->eta_cycle, rt->P_loss_cycle);
+    rt->win_phi0 = rt->y[HG_Y_PHI_P];
+    rt->win_t0 = rt->t;
+    rt->win_eta2_0 = rt->y[HG_Y_ETA2];
+    rt->win_efric_0 = rt->y[HG_Y_E_FRIC];
+}
+
+static double rpm(double w) { return w * 30.0 / 3.141592653589793; }
+
+/* The map holds its edge values beyond its grid: say so once per run. */
+static void check_map_range(hg_runtime *rt, const hg_effmap *map, const hg_logger *lg)
+{
+    double w = rt->y[HG_Y_W_P], T = rt->u_end.T_s, K = rt->u_end.T_bath;
+    if (!map || rt->map_warned || hg_effmap_inside(map, w, T, K)) return;
+    rt->map_warned = 1;
+    hg_logf(lg, "logStatusWarning",
+            "t = %.6g s: operating point %.0f rpm, T_s = %.1f N.m, T_bath = %.1f degC lies "
+            "outside the efficiency map (%.0f-%.0f rpm, %.0f-%.0f N.m, %.0f-%.0f degC): the "
+            "map holds its edge values there",
+            rt->t, rpm(fabs(w)), T, K - 273.15, rpm(map->w[0]), rpm(map->w[map->n_w - 1]),
+            map->T[0], map->T[map->n_T - 1],
+            map->K[0] - 273.15, map->K[map->n_K - 1] - 273.15);
+}
+
+void hg_stepping_end(hg_runtime *rt, const hg_setup *s, double t_end, const hg_logger *lg)
+{
+    rt->t = t_end;
+    hg_stepping_inputs_at(rt, t_end, &rt->u_end);
+    check_map_range(rt, s->p.map, lg);
+}

@@ -1,0 +1,61 @@
+/* What evolves in time (hg_runtime) and the stepping helpers of the model object: the initial
+ * state, the inputs over a step, the events (contact changes, averaging windows), the angle wrap
+ * and the step limit. They work on an hg_runtime and an hg_setup and call only downwards. */
+#ifndef HG_STEPPING_H
+#define HG_STEPPING_H
+
+#include "hg_vars.h"
+#include "io/log.h"
+#include "model/setup.h"
+
+/* Everything that evolves in time; plain data, so a snapshot is a copy. */
+typedef struct {
+    double t;
+    double y[HG_NY];
+    int mode;                      /* backlash contact mode HG_MODE_* */
+    int n_impacts;                 /* contact changes so far */
+    double T_c_warm[HG_MAX_PAIRS]; /* warm starts of the thermal solves [K] */
+    hg_inputs u0, du;              /* inputs at the step start and their time derivatives */
+    double t_u0;                   /* time at which u0 holds */
+    hg_inputs u_end;               /* inputs extrapolated to the end of the last step */
+    int restart;                   /* the integrator must restart before the next step */
+    double win_phi0, win_t0;       /* start of the averaging window: pinion angle, time */
+    double win_eta2_0, win_efric_0;
+    int windows;                   /* averaging windows completed */
+    double eta_cycle, P_loss_cycle;
+    int map_warned;                /* the map level has said once that it left its grid */
+} hg_runtime;
+
+/* Static equilibrium at speed w_p0 at time t0 (physics 8.6), inputs of v held. */
+void hg_stepping_start(hg_runtime *rt, const hg_setup *s, const hg_vars *v, double t0);
+
+/* The inputs at time t: u0 extrapolated with du. */
+void hg_stepping_inputs_at(const hg_runtime *rt, double t, hg_inputs *u);
+
+/* Takes the inputs u and derivatives du for a step from the current time; asks for a restart
+ * when they differ from what the integrator last saw, and wraps the pinion angle. */
+void hg_stepping_begin(hg_runtime *rt, const hg_setup *s, const hg_inputs *u,
+                       const hg_inputs *du);
+
+/* The longest integrator step of this communication step [s] (0: no limit). */
+double hg_stepping_step_limit(const hg_runtime *rt, const hg_setup *s);
+
+/* 1 when contact changes are root events (the exact dead zone of the varying mesh). */
+int hg_stepping_contact_events(const hg_dyn_params *p);
+
+/* The root functions: g[0..1] the backlash edges, g[2..3] the window ends. */
+#define HG_STEPPING_N_ROOTS 4
+void hg_stepping_roots(const hg_runtime *rt, const hg_setup *s, const double *y, double *g);
+
+/* A contact change (dir[0], dir[1] of the roots, +1 upwards, -1 downwards). */
+void hg_stepping_contact_event(hg_runtime *rt, const hg_setup *s, const int *dir,
+                               const hg_logger *lg);
+
+/* The end of an averaging window: eta_cycle and P_loss_cycle over it. */
+void hg_stepping_window_event(hg_runtime *rt, const hg_logger *lg);
+
+/* The end of a step at t_end: the final inputs, and a warning once when the map level leaves
+ * its grid. */
+void hg_stepping_end(hg_runtime *rt, const hg_setup *s, double t_end, const hg_logger *lg);
+
+#endif
