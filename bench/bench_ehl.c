@@ -1,6 +1,6 @@
 /* Micro-benchmark of hg_ehl_pair: ns per flank-pair evaluation with and without the T_c solve,
  * and the iteration counts of the solve. The workload mimics the ODE right-hand side: three
- * pairs walking along the path of action of gear set 1 at 2000 rpm (physics 10.4 velocities,
+ * pairs walking along the path of action of gear set 1 at 2000 rpm (docs/physics.md §10.4 velocities,
  * linearly interpolated), loads 0.2-1 x 4760 N, 40 degC bath; each pair keeps its own warm start
  * from the previous call, as the FMU does. Times are medians over timed batches after a warm-up
  * (clock_gettime, CLOCK_MONOTONIC). */
@@ -45,7 +45,7 @@ static hg_lubricant os265962(void)
     return l;
 }
 
-/* physics 10.4 rows at xi = 0.02, 0.34, 0.66, 0.98 */
+/* docs/physics.md §10.4 rows at xi = 0.02, 0.34, 0.66, 0.98 */
 static void path_state(double xi, double W, hg_pair_contact *c)
 {
     static const double X[4] = {0.02, 0.34, 0.66, 0.98};

@@ -91,7 +91,7 @@ def errors(row, ref):
 
 def pick_resonance(fmu):
     """The 1200 rpm scene if its reference shows contact loss, else the nearby speed with the most
-    (physics 8.7)."""
+    (docs/physics.md §8.7)."""
     sc = W.scenes()["resonance"]
     ref = W.measure(fmu, sc, "full", W.REFERENCE, repeats=1, min_total_cpu=0)
     note = f"1200 rpm reference: contact lost {100 * ref.get('loss', 0):.1f} % of the window"

@@ -24,7 +24,7 @@ from hypoid.values import RPM
 SPEEDS_RPM = [100, 250, 500, 1000, 1500, 2000, 3000, 4000, 5000, 6000]
 TORQUES = [10, 25, 50, 100, 200, 300, 400]
 TEMPERATURES_C = [20, 40, 70, 100, 130]
-# The elastic transient decays with 1/(zeta_2 omega_2) = 30 ms (physics 8.6): 0.15 s settles it;
+# The elastic transient decays with 1/(zeta_2 omega_2) = 30 ms (docs/physics.md §8.6): 0.15 s settles it;
 # the steady state repeats every 3 mesh cycles (the load-share period), so a window of a whole
 # number of those periods gives the exact mean.
 SETTLE_CYCLES, WINDOW_CYCLES, SETTLE_MIN_S = 12, 24, 0.15

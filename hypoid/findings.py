@@ -273,7 +273,7 @@ def regime_finding(pts, trace_dir, speed=1000.0):
     if not parts:
         return None
     return _finding("F7", "5", text, "pairs above half the peak load: " + "; ".join(parts)
-                    + " (substitute Hamrock-Dowson map, physics.md §7; diagnostic)",
+                    + " (substitute Hamrock-Dowson map, docs/physics.md §7; diagnostic)",
                     None, f"{speed:g} rpm")
 
 

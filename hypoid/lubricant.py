@@ -1,7 +1,7 @@
 """`hypoid lubricant`: write a lubricant data file ("hypoid-lubricant 1") from data-sheet values.
 
 Data sheets give KV40, KV100 and rho15; the FMU needs the Vogel law eta_0(T) = a exp(b/(T - c)).
-The fit follows physics.md 4.1:
+The fit follows docs/physics.md §4.1:
 
 1. Walther / ASTM D341, log10 log10(nu + 0.7) = A - B log10(T [K]), through KV40 and KV100.
 2. A third point from it at 150 degC.
@@ -32,10 +32,10 @@ import sys
 
 C0 = 273.15  # K at 0 degC
 T_THIRD = 150.0  # degC, third point of the Vogel fit
-EXPANSION = 6.5e-4  # 1/K, density law of physics 4.1
+EXPANSION = 6.5e-4  # 1/K, density law of docs/physics.md §4.1
 MAGIC = "hypoid-lubricant 1"
 
-# Paper Table 2 and the assumed SAE 75W-90 data of physics 4.1 (same for both oils)
+# Paper Table 2 and the assumed SAE 75W-90 data of docs/physics.md §4.1 (same for both oils)
 BUILTIN = {
     "OS265962": dict(kv40=100.0, kv100=15.0, rho15=870.0, alpha_star=(16.09, 11.59, 9.38),
                      alpha_temps=(40.0, 100.0, 140.0), hn_lambda=7.9e-8, hn_alpha=0.70,
@@ -48,7 +48,7 @@ BUILTIN_NOTES = {
     "OS265962": [],
     "OS265963": [
         "k_f: the paper's Table 2 prints 0.80 W/(m K), about 5x the conductivity of any",
-        "mineral/PAO gear oil (0.12-0.15, ~0.2-0.3 at 1 GPa); physics.md decision D8 uses 0.18.",
+        "mineral/PAO gear oil (0.12-0.15, ~0.2-0.3 at 1 GPa); docs/physics.md §0 (D8) uses 0.18.",
         "Set the FMU's k_f override to 0.80 to reproduce the paper as printed.",
     ],
 }
@@ -160,7 +160,7 @@ def walther_nu(a, b, t_c):
 
 
 def density(rho15, t_c):
-    """rho(T) = rho15 [1 - 6.5e-4 (T - 15)] [kg/m^3], T in degC (physics 4.1, assumed)."""
+    """rho(T) = rho15 [1 - 6.5e-4 (T - 15)] [kg/m^3], T in degC (docs/physics.md §4.1, assumed)."""
     return rho15 * (1.0 - EXPANSION * (t_c - 15.0))
 
 
@@ -213,7 +213,7 @@ def vogel_through(temps_c, etas):
 
 
 def fit_vogel(kv40, kv100, rho15):
-    """physics 4.1: Vogel a [Pa s], b [K], c [degC] from KV40, KV100 [mm^2/s], rho15 [kg/m^3]."""
+    """docs/physics.md §4.1: Vogel a [Pa s], b [K], c [degC] from KV40, KV100 [mm^2/s], rho15 [kg/m^3]."""
     _check_range("KV40", kv40, 1.0, 1e5, "mm^2/s")
     _check_range("KV100", kv100, 0.5, 1e4, "mm^2/s")
     _check_range("rho15", rho15, 500.0, 2000.0, "kg/m^3")
@@ -239,7 +239,7 @@ def _check_alpha(alpha_star, alpha_temps):
     t, y = alpha_temps, alpha_star
     if not (t[0] + 1.0 <= t[1] and t[1] + 1.0 <= t[2]):
         raise LubricantError("the alpha* temperatures must increase (by at least 1 K each)")
-    # the quadratic of physics 4.2 must not increase on [t1, t3] (slopes at both ends <= 0)
+    # the quadratic of docs/physics.md §4.2 must not increase on [t1, t3] (slopes at both ends <= 0)
     d1 = (y[1] - y[0]) / (t[1] - t[0])
     d2 = ((y[2] - y[1]) / (t[2] - t[1]) - d1) / (t[2] - t[0])
     if d1 + d2 * (t[0] - t[1]) > 0.0 or d1 + d2 * ((t[2] - t[0]) + (t[2] - t[1])) > 0.0:
@@ -290,7 +290,7 @@ def render(v, notes=(), marked=None):
         f"# Lubricant {v['name']}: written by `hypoid lubricant` (hypoid/lubricant.py).",
         f"# Data sheet: KV40 = {v['kv40']:g} mm^2/s, KV100 = {v['kv100']:g} mm^2/s, "
         f"rho15 = {v['rho_15']:g} kg/m^3.",
-        f"# Vogel fit (physics.md 4.1): Walther A = {wa:.4f}, B = {wb:.4f}; third point at "
+        f"# Vogel fit (docs/physics.md §4.1): Walther A = {wa:.4f}, B = {wb:.4f}; third point at "
         f"{T_THIRD:g} degC;",
         f"# a = {v['vogel_a']:.4e} Pa s, b = {v['vogel_b']:.1f} K, "
         f"c = {v['vogel_c_degc']:.2f} degC.",
@@ -358,7 +358,7 @@ def _parser():
     p = argparse.ArgumentParser(
         prog="hypoid lubricant",
         description="Write a lubricant data file (hypoid-lubricant 1) from data-sheet values. "
-                    "The Vogel law is fitted to KV40/KV100/rho15 as in physics.md 4.1.")
+                    "The Vogel law is fitted to KV40/KV100/rho15 as in docs/physics.md §4.1.")
     p.add_argument("--builtin", action="store_true",
                    help="regenerate the built-in files OS265962.txt and OS265963.txt")
     p.add_argument("--out-dir", help="directory for --builtin (default: resources/lubricants)")

@@ -1,4 +1,4 @@
-"""Figures of one steady-state window of samples (physics.md §9.2): efficiency (RMS, mean and
+"""Figures of one steady-state window of samples (docs/physics.md §9.2): efficiency (RMS, mean and
 energy-weighted), DTE peak-to-peak and minimum against the half backlash, contact loss, contact
 load, and the load-weighted friction coefficient, film thickness and Stribeck ratio."""
 
@@ -13,7 +13,7 @@ REALS = SCALARS + tuple(f"pair[{k}].{f}" for k in PAIRS for f in PAIR_FIELDS)
 INTEGERS = ("contact", "n_impacts")
 for _name in REALS + INTEGERS:  # a renamed FMU variable fails here, not in a worker
     TABLE.variable(_name)
-MIN_PAIR_LOAD = 1.0  # N: below it a pair counts as out of contact (physics.md §13 item 14)
+MIN_PAIR_LOAD = 1.0  # N: below it a pair counts as out of contact (docs/physics.md §13.14)
 
 
 def load_weighted(s, field):

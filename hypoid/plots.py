@@ -236,7 +236,7 @@ def fig11_gear_sets(pts, out, torque=100.0):
 
 def fig5_regime(pts, out, speed=1000.0, cycles=2):
     """Lubrication regime map: g_V against g_E of every pair in contact over two mesh cycles,
-    one cloud per torque, on the Hamrock-Dowson regions (paper Fig. 5; physics.md §7)."""
+    one cloud per torque, on the Hamrock-Dowson regions (paper Fig. 5; docs/physics.md §7)."""
     sel = fd.select(pts, gear_set=1, lubricant=1, lubricant_file="", speed_rpm=speed)
     if "trace" not in sel:
         return None
@@ -275,7 +275,7 @@ def fig5_regime(pts, out, speed=1000.0, cycles=2):
     ax.set_xlabel("elasticity parameter $g_E = W^{8/3}/U^2$")
     ax.set_ylabel("viscosity parameter $g_V = G W^3/U^2$")
     ax.legend(title=f"{speed:g} rpm, {cycles} mesh cycles", loc="upper left")
-    ax.set_title("Lubrication regime map (paper Fig. 5; Hamrock-Dowson regions, physics.md §7,"
+    ax.set_title("Lubrication regime map (paper Fig. 5; Hamrock-Dowson regions, docs/physics.md §7,"
                  f"\nalpha_r = R_s/R_e = {ar:.1f}; diagnostic)", fontsize=10)
     return _save(fig, out, "fig5_regime_map")
 

@@ -1,4 +1,4 @@
-"""Lubrication-regime map (paper Fig. 5) with the substitute of physics.md §7: Hamrock-Dowson
+"""Lubrication-regime map (paper Fig. 5) with the substitute of docs/physics.md §7: Hamrock-Dowson
 film parameters of the four regimes (isoviscous/piezoviscous x rigid/elastic) as functions of
 g_V = G W^3/U^2 and g_E = W^(8/3)/U^2; a point belongs to the regime whose formula gives the
 thickest film (the boundaries are where adjacent formulas are equal). Diagnostic only."""
@@ -16,7 +16,7 @@ def ellipticity(alpha_r):
 
 
 def film_parameters(g_v, g_e, alpha_r):
-    """The four regimes' dimensionless film parameters g_H (physics.md §7), stacked."""
+    """The four regimes' dimensionless film parameters g_H (docs/physics.md §7), stacked."""
     g_v, g_e = np.asarray(g_v, float), np.asarray(g_e, float)
     a = np.asarray(alpha_r, float)
     k = ellipticity(a)

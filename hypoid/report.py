@@ -105,7 +105,7 @@ def write(out, pts, cont, info):
          f"{info['settings']['window_cycles']} mesh cycles recorded at "
          f"{info['settings']['samples_per_cycle']} samples per mesh cycle. Efficiency is "
          "`eta_rms`, the RMS of the instantaneous efficiency over that window (the paper's "
-         "measure, physics.md §9.2).", "",
+         "measure, docs/physics.md §9.2).", "",
          "Tables: `points.csv` / `points.parquet` (steady points), `continuation.csv` / "
          "`continuation.parquet` (up/down sweeps), `findings.csv`, `modal.csv`; signals of the "
          "traced points in `traces/`. Interpretation and caveats: `docs/paper-findings.md`.", "",
@@ -113,7 +113,7 @@ def write(out, pts, cont, info):
          md_table(find[["id", "figure", "at", "paper", "this FMU", "verdict"]], index=False), "",
          "F3/F4/F6 are evaluated at both mesh resonances of gear set 1: mode 2 (`f2`, the "
          "contact-loss resonance of this FMU) and mode 3 (`f3`, placed at the paper's 2000 rpm by "
-         "the k_m calibration, physics.md §8.4).", "",
+         "the k_m calibration, docs/physics.md §8.4).", "",
          "## Resonance speeds", "",
          "Natural frequencies of the linearised system at the mean mesh stiffness (calculated "
          "parameters f_2..f_4); resonance speed n = 60 f / N_p.", "",

@@ -15,7 +15,7 @@ from hypoid.instance import RPM, SPEED_KEY
 
 @dataclass(frozen=True)
 class Settings:
-    samples_per_cycle: int = 32  # communication steps per mesh cycle (physics.md §9.2: >= 32)
+    samples_per_cycle: int = 32  # communication steps per mesh cycle (docs/physics.md §9.2: >= 32)
     window_cycles: int = 50  # mesh cycles recorded after the transient (the paper's window)
     block_cycles: int = 10  # mesh cycles per settling block
     min_settle_cycles: int = 30  # settle at least this long

@@ -1,4 +1,4 @@
-"""`hypoid tca`: gear-set files from the surrogate TCA (physics.md §10) or from a user's TCA table.
+"""`hypoid tca`: gear-set files from the surrogate TCA (docs/physics.md §10) or from a user's TCA table.
 
     hypoid tca surrogate (--set N --out FILE | --all --out-dir DIR)
                          [--harmonics 8] [--contact-harmonics 32]
@@ -90,7 +90,7 @@ def _surrogate_comments(set_no, gs, harmonics, contact_harmonics):
     bl, deg, mm = gs.blank, math.degrees, 1e3
     return [
         f"Gear set {set_no} of Paouris et al., PMC 2016, Table 1, through the surrogate tooth",
-        "contact analysis of physics.md §10. Written by `hypoid tca surrogate`:",
+        "contact analysis of docs/physics.md §10. Written by `hypoid tca surrogate`:",
         "regenerate with `hypoid tca surrogate --all --out-dir resources/gearsets`, do not edit.",
         "Units SI (m, N/m, rad); series format in docs/data-files.md.",
         "",
@@ -446,7 +446,7 @@ def import_table(path, speed_rpm=None, harmonics=HARMONICS, contact_harmonics=CO
         "format docs/tca-import.md.",
         f"Pinion speed of the tabulated velocities {checked.speed_rpm:g} rpm; "
         f"{len(checked.lines)} rows over one period (3 angular pitches).",
-        f"Fit (physics.md §10.7): resampled to {N_SAMPLES} points per period (cubic splines), "
+        f"Fit (docs/physics.md §10.7): resampled to {N_SAMPLES} points per period (cubic splines), "
         f"{harmonics} harmonics for k_m, R_p, e_0, ls",
         f"  and {contact_harmonics} for the contact series, bridged outside contact by a C2 "
         "quintic.",
@@ -481,7 +481,7 @@ def export_csv(set_no, path, speed_rpm=2000.0, rows=360):
                "ls": sur.pair_load_share(gs, psi)}
     columns.update({name: np.where(inside, v, np.nan) for name, v in contact.items()})
     with open(path, "w", newline="", encoding="utf-8") as f:
-        f.write(f"# Gear set {set_no} of the paper's Table 1: surrogate TCA of physics.md §10\n"
+        f.write(f"# Gear set {set_no} of the paper's Table 1: surrogate TCA of docs/physics.md §10\n"
                 "# written by `hypoid tca export-csv`.\n"
                 "# r_py_mm = r_gy_mm = 2 R_y: the surrogate defines only the reduced radius R_y.\n")
         out = csv.writer(f, lineterminator="\n")
@@ -499,7 +499,7 @@ def export_csv(set_no, path, speed_rpm=2000.0, rows=360):
 def _parser():
     p = argparse.ArgumentParser(prog="hypoid tca", description=__doc__.split("\n\n")[0])
     sub = p.add_subparsers(dest="command", required=True)
-    s = sub.add_parser("surrogate", help="gear-set files of the paper's sets 1-3 (physics.md §10)")
+    s = sub.add_parser("surrogate", help="gear-set files of the paper's sets 1-3 (docs/physics.md §10)")
     which = s.add_mutually_exclusive_group(required=True)
     which.add_argument("--set", type=int, choices=sorted(sur.TABLE_1), help="gear set of Table 1")
     which.add_argument("--all", action="store_true", help="all three sets")

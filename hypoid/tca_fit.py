@@ -1,4 +1,4 @@
-"""Fourier series of physics.md §10.7: uniform resampling, smooth fill outside contact, fit, error.
+"""Fourier series of docs/physics.md §10.7: uniform resampling, smooth fill outside contact, fit, error.
 
 A series over one period of its argument ψ is y(ψ) = mean + Σ_i [sin_i sin(iψ) + cos_i cos(iψ)]
 (docs/data-files.md). Samples are taken on the uniform grid ψ_n = 2πn/N, n = 0 … N−1.
@@ -9,7 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.interpolate import CubicSpline
 
-N_SAMPLES = 768  # samples per period (§10.7: N ≥ 64; 512 there): 3·256, so the grids of the three
+N_SAMPLES = 768  # samples per period (docs/physics.md §10.7: N ≥ 64): 3·256, so the grids of the three
 #                  pairs coincide and Σ ls = 1, ls₀ = 1/3 hold exactly on the samples
 MAX_HARMONICS = 32  # most harmonics a gear-set file may carry
 ANGLE_EPS = 1e-9  # grid points this close to a contact arc's ends belong to the arc [rad]

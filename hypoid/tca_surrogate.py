@@ -1,8 +1,8 @@
-"""Surrogate tooth contact analysis (physics.md §10) for the gear sets of the paper's Table 1.
+"""Surrogate tooth contact analysis (docs/physics.md §10) for the gear sets of the paper's Table 1.
 
-Lengths in m, angles in rad unless a name says otherwise. The mesh angle is θ = N_p φ_p; the
-tooth-pair functions take ψ = θ/3 for pair 1 (ψ_k = (θ + 2π(k−1))/3 for pair k), so one period of
-ψ is three mesh cycles (docs/data-files.md).
+Section numbers (§) refer to docs/physics.md. Lengths in m, angles in rad unless a name says
+otherwise. The mesh angle is θ = N_p φ_p; the tooth-pair functions take ψ = θ/3 for pair 1
+(ψ_k = (θ + 2π(k−1))/3 for pair k), so one period of ψ is three mesh cycles (docs/data-files.md).
 """
 
 import math
@@ -184,7 +184,7 @@ class GearSet:
 
     # --- §8.2, §8.4, §10.3–10.5 surrogate quantities ------------------------------------------
     @cached_property
-    def R_p0(self):  # moment arm of the normal force about the pinion axis [m] (D4)
+    def R_p0(self):  # moment arm of the normal force about the pinion axis [m] (D4 of docs/physics.md §0)
         return self.r_m1 * math.cos(self.alpha_nD) * math.cos(self.blank.beta_m1)
 
     @cached_property

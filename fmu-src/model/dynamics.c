@@ -6,7 +6,7 @@
 
 #include "hg_vars.h"
 
-#define SLIDE_EPS 1e-4 /* regularisation of the sliding direction [m/s] (physics 8.8) */
+#define SLIDE_EPS 1e-4 /* regularisation of the sliding direction [m/s] (docs/physics.md §8.8) */
 #define SPIN_EPS 1e-3  /* regularisation of the rotation direction of the map losses [rad/s] */
 
 static double shaft1_torque(const hg_dyn_params *p, const double *y)
@@ -41,7 +41,7 @@ static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn
     ev->W_t = ev->mesh.k_m * ev->f + p->c_m * ev->xdot;
 }
 
-/* Friction torques from the sliding direction (physics 9.1): T_fp w_p + T_fg w_g = -P_loss.
+/* Friction torques from the sliding direction (docs/physics.md §9.1): T_fp w_p + T_fg w_g = -P_loss.
  * Pairs carry |W_t|: on the coast flank the drive flank's contact data stand in for its own. */
 static void pair_friction(const hg_dyn_params *p, const hg_inputs *u, const double *y,
                           int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
@@ -161,7 +161,7 @@ void hg_dyn_derivatives(const hg_dyn_params *p, const hg_inputs *u, const double
         ydot[HG_Y_W_G] = ev->acc_p / p->ratio;
     } else {
         ydot[HG_Y_W_P] = (T_1 - ev->mesh.R_p * ev->W_t + ev->T_fp) / p->I_p;      /* eq. 21 */
-        ydot[HG_Y_W_G] = (ev->R_g * ev->W_t - T_2 + ev->T_fg) / p->I_g;           /* eq. 22, D3 */
+        ydot[HG_Y_W_G] = (ev->R_g * ev->W_t - T_2 + ev->T_fg) / p->I_g;           /* eq. 22, D3 of docs/physics.md §0 */
     }
     ydot[HG_Y_W_W] = (T_2 - ev->T_w) / p->I_w;                                     /* eq. 23 */
     ydot[HG_Y_GOV] = p->speed_governor ? y[HG_Y_W_W] - u->w_set / p->ratio : 0.0;

@@ -1,4 +1,4 @@
-/* The 4-DoF torsional hypoid pair (paper eqs. 20-25 with correction D3, physics.md 8.1) as a pure
+/* The 4-DoF torsional hypoid pair (paper eqs. 20-25 with correction D3, docs/physics.md §8.1) as a pure
  * right-hand side, with the energy audit and efficiency integrals carried as extra states.
  * With a rigid mesh the pinion and gear turn as one body (x stays 0, w_g = w_p N_p/N_g) and the
  * mesh load follows from the gear's equation of motion. */
@@ -41,7 +41,7 @@ typedef struct {
 
 typedef struct {
     hg_mesh_point mesh;
-    double R_g;        /* gear contact radius R_p N_g/N_p [m] (D4) */
+    double R_g;        /* gear contact radius R_p N_g/N_p [m] (D4 of docs/physics.md §0) */
     double f;          /* backlash function f(x) [m] */
     double Phi;        /* its potential [m^2]: the mesh spring stores k_m Phi */
     double xdot;       /* dx/dt [m/s] */

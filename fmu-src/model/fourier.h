@@ -1,4 +1,4 @@
-/* Truncated Fourier series of the tooth contact data (paper eqs. 1-4, correction D1):
+/* Truncated Fourier series of the tooth contact data (paper eqs. 1-4, D1 of docs/physics.md §0):
  *   y(psi) = mean + sum_{i=1..n} [ s_i sin(i psi) + c_i cos(i psi) ]                          */
 #ifndef HG_FOURIER_H
 #define HG_FOURIER_H

@@ -8,7 +8,7 @@
 #include "io/datafile.h"
 
 #define TWO_PI 6.283185307179586
-#define LS_CONTACT_FLOOR 1e-3 /* load shares below this count as out of contact (physics 10.7) */
+#define LS_CONTACT_FLOOR 1e-3 /* load shares below this count as out of contact (docs/physics.md §10.7) */
 #define CHECK_POINTS 720      /* samples over three mesh cycles for the sanity checks */
 
 static int read_series(const hg_datafile *f, const char *name, hg_series *y, char *err,

@@ -46,7 +46,7 @@ static int validate_input(const hg_modal_input *in, char *err, size_t errlen)
  * Undamped eigenproblem
  * ------------------------------------------------------------------------------------------- */
 
-/* Stiffness matrix of §8.4 [N m/rad] (k_m R^2 terms: N/m * m^2). */
+/* Stiffness matrix of docs/physics.md §8.4 [N m/rad] (k_m R^2 terms: N/m * m^2). */
 static void build_K(const hg_modal_input *in, double K[N][N])
 {
     const double k1 = in->k_t1, k2 = in->k_t2, km = in->k_m, Rp = in->R_p, Rg = in->R_g;

@@ -1,5 +1,5 @@
 /* Modal analysis of the linearised 4-DoF torsional hypoid model and the dampers that reproduce
- * given modal damping ratios (physics.md §8.4, §8.5).
+ * given modal damping ratios (docs/physics.md §8.4, §8.5).
  *
  * DoF order everywhere: q = [phi_s, phi_p, phi_g, phi_w] (shaft 1 end, pinion, gear, wheel end).
  * Linearisation (f(x) -> x, mean radii):
@@ -55,7 +55,7 @@ typedef struct {
 int hg_modal_analysis(const hg_modal_input *in, hg_modes *out, char *err, size_t errlen);
 
 /* Dampers (c_t1, c, c_t2) such that phi_i^T C phi_i = 2 zeta_i omega_i for the elastic modes
- * i = 2, 3, 4 (physics.md §8.5, procedure 1). zeta[0..2] are the target ratios of modes 2, 3, 4,
+ * i = 2, 3, 4 (docs/physics.md §8.5, procedure 1). zeta[0..2] are the target ratios of modes 2, 3, 4,
  * each finite and in [0, 1]; the rigid mode is undamped by construction.
  *
  * The exact 3x3 solve is done on the scaled system (rows divided by the target, columns scaled to

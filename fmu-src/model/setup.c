@@ -7,7 +7,7 @@
 #include "model/modal.h"
 
 #define GOVERNOR_ZETA 0.7     /* damping ratio of the speed governor's closed loop */
-#define STEPS_PER_MESH 30     /* CVODE's automatic max_step: 1/30 of a mesh period (physics 8.8) */
+#define STEPS_PER_MESH 30     /* CVODE's automatic max_step: 1/30 of a mesh period (docs/physics.md §8.8) */
 
 /* user_file if set (absolute, or relative to the resources), else resources/<builtin>. */
 static int resolve_path(const char *resource_dir, const char *user_file, const char *builtin,

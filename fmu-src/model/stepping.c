@@ -8,7 +8,7 @@
 #define MAX_AUTO_STEP 1e-3    /* [s] */
 #define STEPS_PER_MODE 8      /* fixed steps per period of the highest natural mode, at least */
 
-/* Static equilibrium at speed (physics 8.6): shafts twisted by their torques, mesh deflected by
+/* Static equilibrium at speed (docs/physics.md §8.6): shafts twisted by their torques, mesh deflected by
  * W_t / k_m beyond the backlash on the loaded flank. */
 void hg_stepping_start(hg_runtime *rt, const hg_setup *s, const hg_vars *v, double t0)
 {
@@ -77,7 +77,7 @@ void hg_stepping_begin(hg_runtime *rt, const hg_setup *s, const hg_inputs *u,
 }
 
 /* Variable-step solvers: the user's max_step, or automatically 1/steps_per_mesh of a mesh period
- * for the compliant meshes (physics 8.8; none for the rigid one). The fixed-step solver:
+ * for the compliant meshes (docs/physics.md §8.8; none for the rigid one). The fixed-step solver:
  * steps_per_mesh_cycle per mesh period, never longer than the user's max_step nor than
  * 1/STEPS_PER_MODE of the period of the highest natural mode, which a fixed step must resolve
  * whatever the speed. */

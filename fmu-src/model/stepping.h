@@ -26,7 +26,7 @@ typedef struct {
     int map_warned;                /* the map level has said once that it left its grid */
 } hg_runtime;
 
-/* Static equilibrium at speed w_p0 at time t0 (physics 8.6), inputs of v held. */
+/* Static equilibrium at speed w_p0 at time t0 (docs/physics.md §8.6), inputs of v held. */
 void hg_stepping_start(hg_runtime *rt, const hg_setup *s, const hg_vars *v, double t0);
 
 /* The inputs at time t: u0 extrapolated with du. */

@@ -1,5 +1,5 @@
 /* Asperity (boundary) contact: Greenwood-Tripp with Gaussian heights (paper eqs. 11-13,
- * physics.md 5). Pure functions, SI units. */
+ * docs/physics.md §5). Pure functions, SI units. */
 #ifndef HG_TRIBO_ASPERITY_H
 #define HG_TRIBO_ASPERITY_H
 
@@ -11,7 +11,7 @@ double hg_gt_F2(double lambda);
 double hg_gt_F52(double lambda);
 
 /* Greenwood-Tripp load and real contact area (eqs. 12-13, prefactor 8 sqrt2/15 paired with the
- * paper's E* = E/(1-nu^2), physics 5.2):
+ * paper's E* = E/(1-nu^2), docs/physics.md §5.2):
  *   W_asp = (8 sqrt2/15) pi (eta beta sigma)^2 sqrt(sigma/beta) E* A_EHL F_5/2(lambda_s)   [N]
  *   A_asp = pi^2 (eta beta sigma)^2 A_EHL F_2(lambda_s)                                   [m^2]
  * lambda_s = h_c/sigma_c; eta_beta_sigma = eta_s beta_s sigma_c; sigma_over_beta is the

@@ -14,7 +14,7 @@ void hg_kinematics_eval(const double u_p[2], const double u_g[2], hg_kinematics 
     kin->V_s[1] = u_p[1] - u_g[1];
     kin->v_s = sqrt(kin->V_s[0] * kin->V_s[0] + kin->V_s[1] * kin->V_s[1]);
     if (ue2 > 0.0) {
-        kin->cos2_e = ux * ux / ue2; /* theta_e from the minor axis (physics 1) */
+        kin->cos2_e = ux * ux / ue2; /* theta_e from the minor axis (docs/physics.md §1) */
         kin->sin2_e = uy * uy / ue2;
     } else {
         kin->cos2_e = 1.0;
@@ -32,7 +32,7 @@ double hg_entrainment_angle(const double U_e[2])
 void hg_entrainment_radii(double R_x, double R_y, double cos2_e, double sin2_e, double *R_e,
                           double *R_s)
 {
-    /* 1/R_e = cos^2/R_x + sin^2/R_y ; 1/R_s = sin^2/R_x + cos^2/R_y   (physics 2.2) */
+    /* 1/R_e = cos^2/R_x + sin^2/R_y ; 1/R_s = sin^2/R_x + cos^2/R_y   (docs/physics.md §2.2) */
     *R_e = 1.0 / (cos2_e / R_x + sin2_e / R_y);
     *R_s = 1.0 / (sin2_e / R_x + cos2_e / R_y);
 }
@@ -211,7 +211,7 @@ void hg_hertz_eval(double W, double R_x, double R_y, double E_star, hg_hertz_mod
     double small = R_x > R_y ? R_y : R_x, k, E, K, base;
     k = hg_ellipticity(big / small, mode, &E, &K);
     if (W < 0.0) W = 0.0;
-    /* a_c = (6 k^2 E W R/(pi E*))^(1/3), b_c = (6 E W R/(pi k E*))^(1/3)   (physics 2.3) */
+    /* a_c = (6 k^2 E W R/(pi E*))^(1/3), b_c = (6 E W R/(pi k E*))^(1/3)   (docs/physics.md §2.3) */
     base = cbrt(6.0 * E * W * R / (HG_PI * E_star * k));
     h->k = k;
     h->E_bar = E;

@@ -1,5 +1,5 @@
 /* Contact geometry of one flank pair: kinematics in the ellipse frame and the Hertzian ellipse
- * (physics.md 1-2, paper section 2.2). Frame: x along the minor axis of the contact ellipse
+ * (docs/physics.md §1–2, paper section 2.2). Frame: x along the minor axis of the contact ellipse
  * (across the contact line), y along the major axis. Pure functions, SI units. */
 #ifndef HG_TRIBO_CONTACT_H
 #define HG_TRIBO_CONTACT_H
@@ -14,7 +14,7 @@ typedef enum {
     HG_HERTZ_APPROX = 1 /* Hamrock-Brewe 1983 curve fits */
 } hg_hertz_mode;
 
-/* Entrainment and sliding (physics 1; paper eq. 9, 10 inputs). */
+/* Entrainment and sliding (docs/physics.md §1; paper eq. 9, 10 inputs). */
 typedef struct {
     double U_e[2];  /* entrainment vector (u_p + u_g)/2 [m/s] */
     double u_e;     /* |U_e| [m/s] */
@@ -26,7 +26,7 @@ typedef struct {
     double U_g;     /* U_tot,g = |u_g| [m/s] */
 } hg_kinematics;
 
-/* Hertzian ellipse (physics 2.3). */
+/* Hertzian ellipse (docs/physics.md §2.3). */
 typedef struct {
     double k;      /* ellipticity a_c/b_c >= 1 */
     double E_bar;  /* complete elliptic integral of the second kind E(m), m = 1 - 1/k^2 */
@@ -44,10 +44,10 @@ typedef struct {
 /* U_e, V_s, theta_e (as cos^2/sin^2, no trigonometry) and surface speeds. */
 void hg_kinematics_eval(const double u_p[2], const double u_g[2], hg_kinematics *kin);
 
-/* theta_e = atan2(|U_e,y|, |U_e,x|) [rad], 0 when U_e = 0 (physics 1). */
+/* theta_e = atan2(|U_e,y|, |U_e,x|) [rad], 0 when U_e = 0 (docs/physics.md §1). */
 double hg_entrainment_angle(const double U_e[2]);
 
-/* R_e (along entrainment) and R_s (side leakage) from Euler's theorem (physics 2.2) [m]. */
+/* R_e (along entrainment) and R_s (side leakage) from Euler's theorem (docs/physics.md §2.2) [m]. */
 void hg_entrainment_radii(double R_x, double R_y, double cos2_e, double sin2_e, double *R_e,
                           double *R_s);
 

@@ -86,7 +86,7 @@ typedef struct {
     double h_c, A_visc, F_b, k_f;
 } ehl_eval;
 
-/* Hertz (physics 2) */
+/* Hertz (docs/physics.md §2) */
 static void stage_hertz(ehl_eval *e)
 {
     const hg_ehl_params *p = e->p;
@@ -96,7 +96,7 @@ static void stage_hertz(ehl_eval *e)
     e->out->p_h = e->st.hertz.p_max;
 }
 
-/* film at the inlet temperature (eq. 10, D7) */
+/* film at the inlet temperature (eq. 10; D7 of docs/physics.md §0) */
 static void stage_film(ehl_eval *e)
 {
     hg_rheo_state in;
@@ -196,7 +196,7 @@ static void stage_friction(ehl_eval *e)
     out->mu = out->F_f / e->c->W;
 }
 
-/* regime parameters on the entrainment radius (physics 7), diagnostics only */
+/* regime parameters on the entrainment radius (docs/physics.md §7), diagnostics only */
 static void stage_regime(ehl_eval *e)
 {
     hg_pair_friction *out = e->out;

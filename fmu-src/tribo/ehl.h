@@ -1,5 +1,5 @@
 /* Mixed-EHL conjunctional friction and thermal model of one hypoid flank pair (paper section
- * 2.2, eqs. 5-19; physics.md 1-7). The entry point consumes the seam struct hg_pair_contact and
+ * 2.2, eqs. 5-19; docs/physics.md §1–7). The entry point consumes the seam struct hg_pair_contact and
  * fills hg_pair_friction (tribo/pair_contact.h).
  *
  * Pure: the result depends only on the arguments. The only state carried between calls is the
@@ -16,7 +16,7 @@
 typedef enum { HG_Z_SIMPLE = 0, HG_Z_EXACT = 1 } hg_roelands_z_mode;
 typedef enum { HG_SHEAR_P_MEAN = 0, HG_SHEAR_P_MAX = 1 } hg_shear_pressure;
 
-#define HG_EHL_LOAD_MIN 1.0 /* [N] below this the pair carries no friction (physics 13.14) */
+#define HG_EHL_LOAD_MIN 1.0 /* [N] below this the pair carries no friction (docs/physics.md §13.14) */
 #define HG_EHL_H_MIN 1e-9   /* [m] floor on h_c */
 
 typedef struct {

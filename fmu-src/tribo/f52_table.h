@@ -2,7 +2,7 @@
  * Written by tools/gen_f52_table.py (python3 + numpy + scipy); regenerate with
  *     python3 tools/gen_f52_table.py
  * Greenwood-Tripp statistical function F_5/2(lambda) = 1/sqrt(2 pi) int_lambda^inf
- * (s - lambda)^(5/2) exp(-s^2/2) ds (physics.md 5.3), by adaptive quadrature (rel. tol. 1e-13,
+ * (s - lambda)^(5/2) exp(-s^2/2) ds (docs/physics.md §5.3), by adaptive quadrature (rel. tol. 1e-13,
  * cross-checked to 1e-12 against an independent trapezoidal rule in ln t).
  * Nodes lambda_i = i * HG_F52_STEP, i = 0 .. HG_F52_COUNT-1. hg_f52_ln holds ln F_5/2(lambda_i),
  * hg_f52_dln its slope -2.5 F_3/2 / F_5/2 for cubic Hermite interpolation of ln F_5/2

@@ -55,7 +55,7 @@ static int cross_check(const hg_lubricant *l, const char *where, char *err, size
                  where, l->vogel_c, t[0]);
         return -1;
     }
-    /* alpha*(T) quadratic of physics 4.2: its slope is linear in T, so non-positive slopes at
+    /* alpha*(T) quadratic of docs/physics.md §4.2: its slope is linear in T, so non-positive slopes at
      * both ends mean non-increasing throughout */
     d1 = (y[1] - y[0]) / (t[1] - t[0]);
     d12 = (y[2] - y[1]) / (t[2] - t[1]);

@@ -1,4 +1,4 @@
-/* Lubricant properties (paper Table 2, physics.md 4, 6.5) and the lubricant data file
+/* Lubricant properties (paper Table 2, docs/physics.md §4, §6.5) and the lubricant data file
  * "hypoid-lubricant 1" (docs/data-files.md). */
 #ifndef HG_TRIBO_LUBRICANT_H
 #define HG_TRIBO_LUBRICANT_H
@@ -23,7 +23,7 @@ typedef struct {
 } hg_lubricant;
 
 /* Reads a "hypoid-lubricant 1" file into *lub, checking each value's range and, across keys:
- * alpha*(T) of physics 4.2 non-increasing on [alpha_T[0], alpha_T[2]], the Vogel pole c at least
+ * alpha*(T) of docs/physics.md §4.2 non-increasing on [alpha_T[0], alpha_T[2]], the Vogel pole c at least
  * 40 K below alpha_T[0], hn_alpha hn_beta <= 1. Returns 0, or -1 with err naming the file and,
  * where there is one, the line. *lub is only written on success. */
 int hg_lubricant_load(const char *path, hg_lubricant *lub, char *err, size_t errlen);

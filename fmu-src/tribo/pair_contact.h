@@ -29,8 +29,8 @@ typedef struct {
     double R_e;    /* effective radius along the entrainment direction [m] */
     double R_s;    /* effective radius along the side-leakage direction [m] */
     double p_h;    /* maximum Hertzian pressure [Pa] */
-    double g_V;    /* regime viscosity parameter (physics §7) */
-    double g_E;    /* regime elasticity parameter (physics §7) */
+    double g_V;    /* regime viscosity parameter (docs/physics.md §7) */
+    double g_E;    /* regime elasticity parameter (docs/physics.md §7) */
 } hg_pair_friction;
 
 #endif

@@ -12,7 +12,7 @@ double hg_vogel_ln_eta0(double ln_a, double b, double c, double T)
 
 static void alpha_interp_init(const hg_lubricant *lub, hg_alpha_interp *ai)
 {
-    /* Newton divided differences of the quadratic through the three points (physics 4.2) */
+    /* Newton divided differences of the quadratic through the three points (docs/physics.md §4.2) */
     const double *t = lub->alpha_T, *y = lub->alpha_star;
     double d12 = (y[2] - y[1]) / (t[2] - t[1]);
     ai->T0 = t[0], ai->T1 = t[1], ai->T2 = t[2];

@@ -1,4 +1,4 @@
-/* Lubricant rheology (physics.md 4; paper eqs. 7-8): Vogel eta_0(T), alpha*(T), Roelands
+/* Lubricant rheology (docs/physics.md §4; paper eqs. 7-8): Vogel eta_0(T), alpha*(T), Roelands
  * eta(p, T) with Z from alpha* (simple or exact), Havriliak-Negami shear thinning.
  * Temperatures in K, pressures in Pa, viscosities in Pa s. Pure functions. */
 #ifndef HG_TRIBO_RHEOLOGY_H
@@ -8,7 +8,7 @@
 
 #define HG_ROELANDS_P0 1.96e8     /* [Pa] (1/p0 = 5.1e-9 1/Pa) */
 #define HG_ROELANDS_LN_ETA_R 9.67 /* -ln(6.31e-5 Pa s) */
-/* Guards (physics 4.3): the Roelands index A = ln eta_0 + 9.67 is floored at HG_ROELANDS_A_MIN
+/* Guards (docs/physics.md §4.3): the Roelands index A = ln eta_0 + 9.67 is floored at HG_ROELANDS_A_MIN
  * (eta_0 >= 0.17 mPa s; our oils have A >= 2.8 up to 300 degC); Vogel is evaluated at
  * T >= c + HG_VOGEL_DT_MIN (its pole is at T = c); ln eta is capped at HG_LN_ETA_MAX. These only
  * act far outside the range of gear oils and keep every result finite. */
@@ -23,7 +23,7 @@
 /* ln eta_0 = ln a + b/(T - c), T clamped to >= c + HG_VOGEL_DT_MIN (Vogel). */
 double hg_vogel_ln_eta0(double ln_a, double b, double c, double T);
 
-/* alpha*(T) interpolant of physics 4.2 with its coefficients computed once: the quadratic through
+/* alpha*(T) interpolant of docs/physics.md §4.2 with its coefficients computed once: the quadratic through
  * the three data points inside [alpha_T[0], alpha_T[2]], log-linear outside with the slope of
  * ln alpha* of the quadratic at the nearest end (C1-continuous). */
 typedef struct {
@@ -33,7 +33,7 @@ typedef struct {
     double s0, s2;     /* d ln alpha* / dT of the quadratic at T0 and T2 [1/K] */
 } hg_alpha_interp;
 
-/* The rheology of one lubricant, evaluated temperature by temperature (physics 4): build it once
+/* The rheology of one lubricant, evaluated temperature by temperature (docs/physics.md §4): build it once
  * per call of the friction model with hg_rheology_init. It carries the warm start of Z_exact
  * between temperatures, so it is the caller's scratch, not shared data. */
 typedef struct {
@@ -95,7 +95,7 @@ double hg_roelands_Z_exact(double alpha_star, double A, double Z_guess, double *
  * the shear stress is tau = eta gamma_dot / F (eq. 7). */
 double hg_hn_factor(double lambda, double alpha_hn, double beta_hn, double gamma_dot);
 
-/* Optional limiting shear stress: min(tau, Lambda p) when Lambda > 0 (physics 4.5). */
+/* Optional limiting shear stress: min(tau, Lambda p) when Lambda > 0 (docs/physics.md §4.5). */
 double hg_shear_cap(double tau, double Lambda, double p);
 
 #endif

@@ -16,7 +16,7 @@ double hg_coleman_length(double a_c, double b_c, double u, double v)
 double hg_moving_source_resistance(double A, double k_s, double chi_s, double l, double U_tot)
 {
     if (!(U_tot > HG_SPEED_FLOOR)) U_tot = HG_SPEED_FLOOR;
-    return 1.06 / (A * k_s) * sqrt(chi_s * l / U_tot); /* eq. 18 (R_f,i, D2) */
+    return 1.06 / (A * k_s) * sqrt(chi_s * l / U_tot); /* eq. 18 (R_f,i: D2 of docs/physics.md §0) */
 }
 
 double hg_film_resistance(double h_c, double k_f, double A)
@@ -143,7 +143,7 @@ static int seed(solver *s, double T_warm)
 }
 
 /* 2. complete the bracket with fixed-point images, which land on the far side of the root
- *    whenever tau is non-increasing (physics 6.6); expand to the cap otherwise */
+ *    whenever tau is non-increasing (docs/physics.md §6.6); expand to the cap otherwise */
 static int complete(solver *s)
 {
     const hg_tc_problem *pb = s->pb;

@@ -1,10 +1,10 @@
-/* Conjunction temperature (paper eqs. 14-19 with correction D2, physics.md 6): moving-source and
+/* Conjunction temperature (paper eqs. 14-19 with correction D2, docs/physics.md §6): moving-source and
  * film resistances, heat partition, Coleman active length, and the implicit T_c solve.
  * Pure functions, SI units, temperatures in K. */
 #ifndef HG_TRIBO_THERMAL_H
 #define HG_TRIBO_THERMAL_H
 
-#define HG_SPEED_FLOOR 1e-6 /* [m/s] floor for speeds that divide (physics 4.5) */
+#define HG_SPEED_FLOOR 1e-6 /* [m/s] floor for speeds that divide (docs/physics.md §4.5) */
 
 /* Coleman active length (eq. 19): half-chord of the ellipse along the direction of motion of a
  * surface moving with (u, v), u along the minor axis (semi-axis b_c) and v along the major axis
@@ -12,7 +12,7 @@
  * Returns b_c when u = v = 0. [m] */
 double hg_coleman_length(double a_c, double b_c, double u, double v);
 
-/* Moving-heat-source resistance R_f,i = 1.06/(A k_s) sqrt(chi_s l_i/U_tot,i) [K/W] (eq. 18, D2);
+/* Moving-heat-source resistance R_f,i = 1.06/(A k_s) sqrt(chi_s l_i/U_tot,i) [K/W] (eq. 18 with D2);
  * U_tot is floored at HG_SPEED_FLOOR. */
 double hg_moving_source_resistance(double A, double k_s, double chi_s, double l, double U_tot);
 
@@ -29,7 +29,7 @@ double hg_flash_rise(double R_fp, double a_h, double q);
 /* (Delta T_oil)_av = |V_s| tau h_c/(8 k_f) [K] (eq. 16). */
 double hg_oil_rise(double v_s, double tau, double h_c, double k_f);
 
-/* The implicit problem of physics 6.6:
+/* The implicit problem of docs/physics.md §6.6:
  *   g(T) = T_in + c0 + c1 tau(T) - T = 0,
  * c0 = R_f,p a_h F_b |V_s| [K] and c1 = |V_s| (R_f,p a_h (A_EHL - A_asp) + h_c/(8 k_f)) [K/Pa]
  * (eqs. 14, 16 with q = F_f |V_s|, F_f = (A_EHL - A_asp) tau + F_b); tau(T) is the shear stress

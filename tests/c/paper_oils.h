@@ -1,4 +1,4 @@
-/* The paper's two lubricants as structs (Table 2; physics 4.1 Vogel fit at full precision,
+/* The paper's two lubricants as structs (Table 2; docs/physics.md §4.1 Vogel fit at full precision,
  * rounded there to 7.560e-5 Pa s, 1109.3 K, -117.8 degC): independent of the resource files, so
  * the physics tests do not depend on the file parser. which = 62 or 63 (OS2659xx). */
 #ifndef HG_TEST_PAPER_OILS_H

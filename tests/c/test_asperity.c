@@ -1,4 +1,4 @@
-/* Greenwood-Tripp functions F_2 and F_5/2 (physics 5.3) against an independent quadrature and the
+/* Greenwood-Tripp functions F_2 and F_5/2 (docs/physics.md §5.3) against an independent quadrature and the
  * reference table; W_asp, A_asp and F_b (paper eqs. 11-13). */
 #include "check.h"
 #include "tribo/asperity.h"
@@ -27,7 +27,7 @@ int main(void)
     CHECK_CLOSE(F_quad(2.5, 0.0), pow(2.0, 0.25) * tgamma(1.75) / sqrt(HG_PI), 1e-13, 0);
     CHECK_CLOSE(hg_gt_F52(0.0), pow(2.0, 0.25) * tgamma(1.75) / sqrt(HG_PI), 1e-12, 0);
 
-    /* physics 5.3 reference table (5 significant digits) */
+    /* docs/physics.md §5.3 reference table (5 significant digits) */
     {
         const double lam[] = {0, 0.5, 1, 1.5, 2, 2.5, 3, 3.5, 4};
         const double f2[] = {0.50000,   0.20964,   7.5340e-2, 2.2847e-2, 5.7687e-3,
@@ -63,7 +63,7 @@ int main(void)
     CHECK(hg_gt_F2(-1.0) == 0.5 && hg_gt_F52(-1.0) == hg_gt_F52(0.0));
     CHECK(hg_gt_F2(1e6) == 0.0 && hg_gt_F52(1e6) == 0.0);
 
-    /* eqs. 12, 13 and 11 at the physics 12 point (lambda = 1.7266, A = 4.278e-6 m^2) */
+    /* eqs. 12, 13 and 11 at the docs/physics.md §12 point (lambda = 1.7266, A = 4.278e-6 m^2) */
     {
         const double lam = 1.7266, A = 4.2776e-6, Es = 210e9 / 0.91;
         double W, Aa, Fb;
@@ -72,10 +72,10 @@ int main(void)
                            hg_gt_F52(lam),
                     1e-14, 0);
         CHECK_CLOSE(Aa, HG_PI * HG_PI * 0.0104 * 0.0104 * A * hg_gt_F2(lam), 1e-14, 0);
-        CHECK_CLOSE(W / 2380.0, 4.1e-5, 0.03, 0); /* physics 12: W_asp/W ~ 4e-5 */
+        CHECK_CLOSE(W / 2380.0, 4.1e-5, 0.03, 0); /* docs/physics.md §12: W_asp/W ~ 4e-5 */
         Fb = hg_boundary_friction(2e6, 0.17, Aa, W);
         CHECK_CLOSE(Fb, 2e6 * Aa + 0.17 * W, 1e-15, 0);
-        CHECK_CLOSE(Fb, 0.0167, 0.03, 0); /* physics 12: 0.02 */
+        CHECK_CLOSE(Fb, 0.0167, 0.03, 0); /* docs/physics.md §12: 0.02 */
     }
     CHECK_DONE();
 }

@@ -1,5 +1,5 @@
-/* Contact geometry: elliptic integrals, exact and approximate Hertz (physics 2.3, 12),
- * kinematics and R_e, R_s (physics 1, 2.2). */
+/* Contact geometry: elliptic integrals, exact and approximate Hertz (docs/physics.md §2.3, §12),
+ * kinematics and R_e, R_s (docs/physics.md §1, §2.2). */
 #include "check.h"
 #include "tribo/contact.h"
 
@@ -49,7 +49,7 @@ int main(void)
     }
 
     /* exact ellipticity (reference: root of the same equation with scipy, 1e-15) and the
-     * Hamrock-Brewe approximation, physics 2.3 table */
+     * Hamrock-Brewe approximation, docs/physics.md §2.3 table */
     {
         const double ratio[] = {1.5, 5, 30, 127.5, 300, 1e4};
         const double kref[] = {1.3101029621127507, 2.890181039836407, 8.876183089807984,
@@ -95,7 +95,7 @@ int main(void)
         CHECK(isfinite(k) && isfinite(Eb) && isfinite(Fb) && k > 1e3);
     }
 
-    /* physics 12: W = 2380 N, R_x = 17.65 mm, R_y = 2.25 m, E* = 210 GPa/(1-0.09) */
+    /* docs/physics.md §12: W = 2380 N, R_x = 17.65 mm, R_y = 2.25 m, E* = 210 GPa/(1-0.09) */
     hg_hertz_eval(2380.0, 17.65e-3, 2.25, 210e9 / 0.91, HG_HERTZ_EXACT, &h);
     CHECK_CLOSE(h.a_c, 5.34e-3, 0.005, 0);
     CHECK_CLOSE(h.b_c, 0.255e-3, 0.005, 0);
@@ -119,7 +119,7 @@ int main(void)
     hg_hertz_eval(0.0, 17.65e-3, 2.25, 230.8e9, HG_HERTZ_EXACT, &h);
     CHECK(h.a_c == 0.0 && h.p_m == 0.0);
 
-    /* kinematics, physics 12 pitch row: u_e = 3.81, |V_s| = 2.36, theta_e = 55.4 deg,
+    /* kinematics, docs/physics.md §12 pitch row: u_e = 3.81, |V_s| = 2.36, theta_e = 55.4 deg,
      * R_e / R_s = 53.9 / 25.9 mm */
     {
         const double up[2] = {2.46, 4.28}, ug[2] = {1.87, 2.00};

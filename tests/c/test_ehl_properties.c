@@ -1,6 +1,6 @@
 /* Properties of the mixed-EHL model: trends, sign and power sanity, guards (no NaN/Inf anywhere
- * on a wide grid, zero speeds, zero load), and unit checks of the rheology (physics 4) and of the
- * T_c solver (physics 6.6). */
+ * on a wide grid, zero speeds, zero load), and unit checks of the rheology (docs/physics.md §4) and of the
+ * T_c solver (docs/physics.md §6.6). */
 #include <float.h>
 #include <string.h>
 
@@ -108,7 +108,7 @@ int main(void)
     int i, j;
     hg_ehl_params_default(&p);
     lubs[0] = l62, lubs[1] = l63;
-    /* --- rheology (physics 4) --- */
+    /* --- rheology (docs/physics.md §4) --- */
     {
         const double Tt[] = {20, 40, 60, 80, 100, 120, 140, 160, 200};
         const double eta[] = {237.6, 85.6, 38.8, 20.6, 12.3, 8.0, 5.6, 4.1, 2.5};
@@ -137,7 +137,7 @@ int main(void)
             prev = a;
         }
     }
-    /* Z_simple, the alpha* it implies, Z_exact (physics 4.3 table) */
+    /* Z_simple, the alpha* it implies, Z_exact (docs/physics.md §4.3 table) */
     {
         const int which[] = {0, 1, 0};
         const double Tc[] = {60, 60, 100}, zs[] = {0.441, 0.522, 0.431};
@@ -196,7 +196,7 @@ int main(void)
         }
         CHECK(worst < 1e-4); /* |Z''| ~ 1e-5 1/K^2; rounding noise would give ~1e-11/h^2 = 4e-9 */
     }
-    /* physics 4.3 scale: 80 degC, Z_simple, eta(0.5/1.0/1.5 GPa) = 1.5/22/185 Pa s */
+    /* docs/physics.md §4.3 scale: 80 degC, Z_simple, eta(0.5/1.0/1.5 GPa) = 1.5/22/185 Pa s */
     {
         CHECK_CLOSE(eta_of(&l62, 80 + C0, 0.5e9, 0), 1.5, 0.04, 0);
         CHECK_CLOSE(eta_of(&l62, 80 + C0, 1.0e9, 0), 22.0, 0.03, 0);

@@ -1,6 +1,6 @@
-/* physics.md 12: the worked example (gear set 1, T_s = 100 Nm, n_p = 2000 rpm, T_bath = 40 degC,
+/* docs/physics.md §12: the worked example (gear set 1, T_s = 100 Nm, n_p = 2000 rpm, T_bath = 40 degC,
  * pitch point), both lubricants and the variants, against the reference values within 0.5 %.
- * Contact state: velocities of the pitch row of physics 10.4, R_x = 17.65 mm, R_y = 2.25 m,
+ * Contact state: velocities of the pitch row of docs/physics.md §10.4, R_x = 17.65 mm, R_y = 2.25 m,
  * W = 2380 N (load share 0.5 of W_t = 4760 N). */
 #include <stdio.h>
 #include <string.h>

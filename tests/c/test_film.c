@@ -1,10 +1,10 @@
 /* Central film thickness: Chittenden (paper eq. 10) against Hamrock-Dowson 1977 at theta_e = 0
- * (physics 3), trends, and the physics 12 value. */
+ * (docs/physics.md §3), trends, and the docs/physics.md §12 value. */
 #include "check.h"
 #include "tribo/contact.h"
 #include "tribo/film.h"
 
-/* physics 12 inlet state of OS265962 at T_in = 60 degC */
+/* docs/physics.md §12 inlet state of OS265962 at T_in = 60 degC */
 #define ETA0 0.038796418835629
 #define ALPHA 14.43e-9
 #define ES (210e9 / 0.91)
@@ -27,7 +27,7 @@ int main(void)
 {
     size_t i;
     double u, prev;
-    /* theta_e = 0: R_e = R_x, R_s = R_y. physics 3 reference calculation (Chittenden / HD):
+    /* theta_e = 0: R_e = R_x, R_s = R_y. docs/physics.md §3 reference calculation (Chittenden / HD):
      * 664/652, 683/702, 683/705 nm for R_y/R_x = 5, 20, 127.5 */
     {
         const double ratio[] = {5.0, 20.0, 127.5};
@@ -42,11 +42,11 @@ int main(void)
             CHECK_CLOSE(hc, ch[i], 0.005, 0);
             CHECK_CLOSE(hh, hd[i], 0.005, 0);
             /* "within a few %": 1.8 % and 2.7 % at ratios 5 and 20; at 127.5 the two
-             * formulas differ by 3.1 % (705 vs 683 nm in physics 3 itself), hence 3.5 % there */
+             * formulas differ by 3.1 % (705 vs 683 nm in docs/physics.md §3 itself), hence 3.5 % there */
             CHECK_CLOSE(hc, hh, agree[i], 0);
         }
     }
-    /* physics 12: h_c = 610 nm at R_e = 53.9 mm, R_s = 25.9 mm (theta_e = 55.4 deg) */
+    /* docs/physics.md §12: h_c = 610 nm at R_e = 53.9 mm, R_s = 25.9 mm (theta_e = 55.4 deg) */
     {
         const double up[2] = {2.46, 4.28}, ug[2] = {1.87, 2.00};
         hg_kinematics kin;

@@ -1,4 +1,4 @@
-/* Gear-set files: the built-in set 1 against physics.md 10.7, and clear errors for bad files. */
+/* Gear-set files: the built-in set 1 against docs/physics.md §10.7, and clear errors for bad files. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -17,7 +17,7 @@ static void builtin_set1(void)
     CHECK(hg_gearset_load("resources/gearsets/gearset1.txt", &g, err, sizeof err) == 0);
     if (err[0]) fprintf(stderr, "%s\n", err);
     CHECK(g.N_p == 13 && g.N_g == 36);
-    CHECK_CLOSE(g.k_m.mean, 1.7111e8, 1e-3, 0.0);  /* physics 10.7 */
+    CHECK_CLOSE(g.k_m.mean, 1.7111e8, 1e-3, 0.0);  /* docs/physics.md §10.7 */
     CHECK_CLOSE(g.R_p.mean, 21.009e-3, 1e-4, 0.0);
     CHECK_CLOSE(g.ls.mean, 1.0 / 3.0, 1e-9, 0.0);
     CHECK_CLOSE(g.e_0.s[0], 1.5e-6, 1e-9, 0.0);

@@ -129,7 +129,7 @@ int main(int argc, char **argv)
         CHECK_CLOSE(l.hn_lambda, i == 0 ? 7.9e-8 : 8.0e-8, 1e-12, 0);
         CHECK_CLOSE(l.hn_alpha, i == 0 ? 0.70 : 0.97, 1e-12, 0);
         CHECK(l.hn_beta == 1.0 && l.k_f == 0.18 && l.c_p_f == 2090.0 && l.rho_15 == 870.0);
-        /* physics 4.1 table and 4.2 interpolation values, through the rheology that runs */
+        /* docs/physics.md §4.1 table and §4.2 interpolation values, through the rheology that runs */
         {
             hg_rheology rh;
             hg_rheo_state s60, s100;

@@ -1,4 +1,4 @@
-/* Unit tests of the modal kernel (physics.md §8.3–§8.5, §11.2).
+/* Unit tests of the modal kernel (docs/physics.md §8.3–§8.5, §11.2).
  *
  * The independent damping check builds the full damped first-order system x' = A x (8x8) from
  * M, K, C assembled here (not by the module) and computes its complex eigenvalues with a small
@@ -18,7 +18,7 @@ static const double PI = 3.14159265358979323846264338327950288;
 
 typedef double complex cplx;
 
-/* Table 3 (physics.md §8.3) with the lever arms of §8.2: R_g = R_p N_g / N_p. */
+/* Table 3 (docs/physics.md §8.3) with the lever arms of §8.2: R_g = R_p N_g / N_p. */
 static hg_modal_input gear_set(double k_m, double R_p, double N_p, double N_g)
 {
     hg_modal_input in;

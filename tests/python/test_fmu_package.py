@@ -59,7 +59,7 @@ def test_capabilities(model_description):
 
 
 def test_contract_variables_present(model_description):
-    """The names, causalities and units of the interface contract (shared/spec)."""
+    """The names, causalities and units of the interface contract (the variables hosts rely on)."""
     by_name = {v.name: v for v in model_description.modelVariables}
     for name in ("T_s", "T_w", "T_bath", "w_set"):
         assert by_name[name].causality == "input"

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 from fmpy import simulate_fmu
 
-PHYSICS_F = {1: (260.8, 433.3, 1722.2)}  # physics.md 8.4, gear set 1
+PHYSICS_F = {1: (260.8, 433.3, 1722.2)}  # docs/physics.md §8.4, gear set 1
 ENERGY = ["E_in", "E_out", "E_friction", "E_damping", "E_excitation", "E_stored"]
 
 
@@ -26,7 +26,7 @@ def test_default_reaches_steady_meshing_at_static_deflection(default_run, model_
     r = default_run
     steady = r["time"] > 0.15
     b = 70e-6
-    k_m0 = 1.7106e8  # gear set 1 file mean (physics 10.7: 1.7111e8)
+    k_m0 = 1.7106e8  # gear set 1 file mean (docs/physics.md §10.7: 1.7111e8)
     deflection = r["DTE"][steady].mean() - b
     assert deflection == pytest.approx(r["W_t"][steady].mean() / k_m0, rel=0.02)
     # and the nominal load: T_s / R_p0 minus what friction takes (a few per cent)
@@ -58,7 +58,7 @@ def test_speed_governor_holds_the_set_point(default_run):
 def test_ring_down_matches_modal_analysis(harness):
     """Release the pre-loaded, lightly damped, constant-mesh system and read its free vibration:
     the spectral peaks sit at the modal analysis frequencies (calculated parameters f_2, f_3)
-    which match physics.md 8.4 (260.8 / 433.3 Hz)."""
+    which match docs/physics.md §8.4 (260.8 / 433.3 Hz)."""
     h = harness()
     h.init(mesh_model=1, friction_model=1, load_mode=1, w_p0=0.0, zeta_2=1e-3, zeta_3=1e-3,
            zeta_4=1e-3, T_s=100.0, T_w=100.0 * 36 / 13)
@@ -78,7 +78,7 @@ def test_ring_down_matches_modal_analysis(harness):
 
 
 def test_contact_loss_near_mode_two_and_energy_still_closes(fmu_path):
-    """Frictionless, 50 N.m at the mode-2 mesh resonance (about 1200 rpm for set 1, physics 8.7):
+    """Frictionless, 50 N.m at the mode-2 mesh resonance (about 1200 rpm for set 1, docs/physics.md §8.7):
     the teeth separate, the integrator stops at every impact, and energy still balances."""
     w = 1200 * np.pi / 30
     r = simulate_fmu(str(fmu_path), stop_time=0.4, output_interval=5e-5,

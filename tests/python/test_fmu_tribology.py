@@ -1,4 +1,4 @@
-"""The lubricated contact inside the running FMU: orders of magnitude of physics.md 12, the power
+"""The lubricated contact inside the running FMU: orders of magnitude of docs/physics.md §12, the power
 identity of the friction torques, the lubricant ranking, and pairs out of mesh."""
 
 import numpy as np
@@ -27,7 +27,7 @@ def loaded(r, q):
 
 
 def test_default_point_orders_of_magnitude(default):
-    """physics.md 12: h_c of a few hundred nm, mu 0.01-0.03, T_c - T_in of 15-45 K (at the worked
+    """docs/physics.md §12: h_c of a few hundred nm, mu 0.01-0.03, T_c - T_in of 15-45 K (at the worked
     point; the running mesh spans more of the path), efficiency about 99 %."""
     h_c, mu, rise = loaded(default, "h_c"), loaded(default, "mu"), loaded(default, "T_c") - 333.15
     assert 300e-9 < np.median(h_c) < 1000e-9
@@ -35,7 +35,7 @@ def test_default_point_orders_of_magnitude(default):
     assert 8.0 < np.median(rise) < 45.0
     assert 1.2 < np.median(loaded(default, "lambda")) < 2.5  # viscous-dominated, some asperities
     assert np.median(loaded(default, "p_h")) == pytest.approx(0.8e9, rel=0.3)
-    # regime parameters near the worked point's load (physics 7: g_V 1.0e9, g_E 2.1e7 at 2380 N)
+    # regime parameters near the worked point's load (docs/physics.md §7: g_V 1.0e9, g_E 2.1e7 at 2380 N)
     near = np.abs(loaded(default, "W") - 2380.0) < 150.0
     assert np.median(loaded(default, "g_V")[near]) == pytest.approx(1.0e9, rel=0.2)
     assert np.median(loaded(default, "g_E")[near]) == pytest.approx(2.1e7, rel=0.2)
@@ -43,7 +43,7 @@ def test_default_point_orders_of_magnitude(default):
 
 
 def test_friction_torques_satisfy_the_power_identity(default):
-    """T_fp w_p + T_fg w_g = -P_loss to round-off (physics 9.1)."""
+    """T_fp w_p + T_fg w_g = -P_loss to round-off (docs/physics.md §9.1)."""
     r = default
     lhs = r["T_fp"] * r["w_p"] + r["T_fg"] * r["w_g"]
     assert np.all(np.abs(lhs + r["P_loss"]) <= 1e-9 * np.maximum(r["P_loss"], 1.0))
@@ -78,7 +78,7 @@ def test_hot_oil_thins_the_film_and_raises_boundary_friction(fmu_path, default):
 
 
 def test_isothermal_friction_is_higher_than_thermal(fmu_path, default):
-    """The thermal feedback lowers mu by 2.5-15x against shear at T_in (physics 12)."""
+    """The thermal feedback lowers mu by 2.5-15x against shear at T_in (docs/physics.md §12)."""
     iso = run(fmu_path, friction_model=3)
     ratio = np.median(loaded(iso, "mu")) / np.median(loaded(default, "mu"))
     assert 1.5 < ratio < 15

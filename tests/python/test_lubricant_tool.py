@@ -1,4 +1,4 @@
-"""Tests of `hypoid lubricant` (hypoid/lubricant.py): the Vogel fit of physics.md 4.1, the file
+"""Tests of `hypoid lubricant` (hypoid/lubricant.py): the Vogel fit of docs/physics.md §4.1, the file
 it writes, the built-in files, and clear errors for bad data-sheet values."""
 
 import math
@@ -13,7 +13,7 @@ from hypoid import lubricant as lub  # noqa: E402
 
 REPO = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 
-# physics.md 4.1: the assumed 75W-90 data and the fit result
+# docs/physics.md §4.1: the assumed 75W-90 data and the fit result
 KV40, KV100, RHO15 = 100.0, 15.0, 870.0
 ETA_TABLE = {20: 237.6, 40: 85.6, 60: 38.8, 80: 20.6, 100: 12.3, 120: 8.0, 140: 5.6, 160: 4.1,
              200: 2.5}  # mPa s

@@ -44,7 +44,7 @@ def tables(fmu_path, tmp_path_factory):
 
 
 def test_resonance_speeds_of_gear_set_1(tables):
-    """Mode 3 is calibrated to the paper's 2000 rpm (physics.md §8.4); mode 2 then sits near
+    """Mode 3 is calibrated to the paper's 2000 rpm (docs/physics.md §8.4); mode 2 then sits near
     1200 rpm. If this moves, docs/paper-findings.md and the speeds above need revisiting."""
     res = fd.resonances(tables[0], 1)
     assert res["f3"] == pytest.approx(2000.0, rel=0.02)

@@ -114,7 +114,7 @@ def test_lever_arms_and_stiffness_match_physics_11_2(n):
     g = gear_set(n)
     radii, k_m0, k_n = TABLE_11_2[n]
     check_printed([1e3 * g.R_p0, 1e3 * g.R_p0 * g.u], radii)
-    # R_g = R_p N_g/N_p is exactly r_m2 cos α_nD cos β_m2 (D4)
+    # R_g = R_p N_g/N_p is exactly r_m2 cos α_nD cos β_m2 (D4 of docs/physics.md §0)
     assert g.R_p0 * g.u == pytest.approx(g.r_m2 * math.cos(g.alpha_nD)
                                          * math.cos(sur.TABLE_1[n].beta_m2), rel=1e-12)
     assert g.k_m0 == pytest.approx(k_m0, abs=0.005e8)
@@ -123,7 +123,7 @@ def test_lever_arms_and_stiffness_match_physics_11_2(n):
 
 
 def mesh_frequencies(k_m, R_p, R_g):
-    """Natural frequencies [Hz] of the linearised 4-DoF model of physics.md §8.4 (Table 3 data)."""
+    """Natural frequencies [Hz] of the linearised 4-DoF model of docs/physics.md §8.4 (Table 3 data)."""
     I_s, I_p, I_g, I_w, k_1, k_2 = 1.4e-2, 1.4e-2, 0.29, 0.29, 8e5, 8e5
     K = np.array([[k_1, -k_1, 0, 0],
                   [-k_1, k_1 + k_m * R_p ** 2, -k_m * R_p * R_g, 0],
@@ -336,7 +336,7 @@ def test_written_files_follow_the_data_file_format(n):
         assert len(entries[f"{s}.mean"]) == 1
         assert len(entries[f"{s}.sin"]) == len(entries[f"{s}.cos"]) <= 32
     text = open(path, encoding="utf-8").read()
-    assert "fit error" in text and "physics.md §10" in text and "r_m1/r_m2" in text
+    assert "fit error" in text and "docs/physics.md §10" in text and "r_m1/r_m2" in text
 
 
 def test_written_files_are_up_to_date(tmp_path):
