@@ -125,6 +125,15 @@ def test_nothing_points_outside_the_repository():
     assert not bad, "references outside the repository:\n" + "\n".join(bad)
 
 
+def test_physics_document_names_files_that_exist():
+    text = PHYSICS.read_text(encoding="utf-8")
+    named = set(re.findall(r"`((?:fmu-src|hypoid|tests|tools|docs|resources|bench|scripts|"
+                           r"modelDescription)/[^`\s]+)`", text))
+    assert len(named) > 10
+    missing = sorted(p for p in named if not (ROOT / p).exists())
+    assert not missing, missing
+
+
 def test_readme_points_to_the_physics_document():
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     assert "docs/physics.md" in readme
