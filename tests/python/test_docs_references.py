@@ -139,13 +139,13 @@ def test_readme_points_to_the_physics_document():
     assert "docs/physics.md" in readme
 
 
-@pytest.mark.parametrize("doc", ["integration.md", "limits.md", "model.md", "data-files.md",
-                                 "studies.md", "paper-findings.md", "tca-import.md",
-                                 "cosimulation.md", "physics.md"])
+@pytest.mark.parametrize("doc", ["README.md"] + [
+    f"docs/{d}" for d in ("integration.md", "limits.md", "model.md", "data-files.md", "studies.md",
+                          "paper-findings.md", "tca-import.md", "cosimulation.md", "physics.md")])
 def test_docs_write_micrometres(doc):
     """Prose says µm; "um" survives only as the FMI displayUnit identifier in code spans."""
-    text = (ROOT / "docs" / doc).read_text(encoding="utf-8")
+    text = (ROOT / doc).read_text(encoding="utf-8")
     prose = re.sub(r"`[^`]*`", "", text)
-    hits = [f"docs/{doc}:{line_of(prose, m.start())}" for m in
+    hits = [f"{doc}:{line_of(prose, m.start())}" for m in
             re.finditer(r"(?<![\w/])\d*\s?um\b", prose)]
     assert not hits, hits
