@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what the project needs on a fresh Debian/Ubuntu machine and builds the FMU:
 #   apt: a C compiler, cmake, SUNDIALS (static archives), python3 with venv;
-#   .venv: the hypoid package with its pinned dependencies.
+#   .venv: the hypoid package with its pinned dependencies;
+#   build/third_party/: the Debian source packages of musl and SUNDIALS (scripts/third_party.sh).
 # Idempotent: each part is skipped when already present.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -23,6 +24,12 @@ if [ ! -x .venv/bin/python ] || ! .venv/bin/python -c 'import hypoid, fmpy, pyte
   touch .venv/.installed
 fi
 
-cmake -S . -B build -DHG_PYTHON="$PWD/.venv/bin/python" >/dev/null
+# Third-party sources from Debian (cached in build/third_party/): musl's portable math for the
+# FMU binary (docs/portability.md).
+musl=""
+while IFS='=' read -r key value; do
+  [ "$key" = musl ] && musl=$value
+done < <(scripts/third_party.sh)
+cmake -S . -B build -DHG_PYTHON="$PWD/.venv/bin/python" -DHG_MUSL_DIR="$musl" >/dev/null
 cmake --build build -j"$(nproc)"
 echo "setup: built build/HypoidGearPair.fmu"
