@@ -11,7 +11,7 @@ from typing import NamedTuple
 
 MODEL_NAME = 'HypoidGearPair'
 MODEL_VERSION = '0.1.0'
-GUID = '{0fd85e18-e0c9-5ca9-8a7c-dce1ce587d2f}'
+GUID = '{412b250d-633d-5d3c-a6d8-b7836bc120ff}'
 
 
 class Variable(NamedTuple):
@@ -43,7 +43,7 @@ _TABLE = (
     Variable(name='w_g', vr=6, causality='output', variability='continuous', type='Real', enumeration=None, unit='rad/s', display_unit='rpm', start=None, min=None, max=None, description='angular speed of the ring gear'),
     Variable(name='w_w', vr=7, causality='output', variability='continuous', type='Real', enumeration=None, unit='rad/s', display_unit='rpm', start=None, min=None, max=None, description='angular speed of the wheel-side shaft end'),
     Variable(name='DTE', vr=8, causality='output', variability='continuous', type='Real', enumeration=None, unit='m', display_unit='um', start=None, min=None, max=None, description='dynamic transmission error x along the line of action (paper eq. 25)'),
-    Variable(name='W_t', vr=9, causality='output', variability='continuous', type='Real', enumeration=None, unit='N', display_unit=None, start=None, min=None, max=None, description='total mesh contact load k_m f(x) + c dx/dt (after backlash)'),
+    Variable(name='W_t', vr=9, causality='output', variability='continuous', type='Real', enumeration=None, unit='N', display_unit=None, start=None, min=None, max=None, description='net mesh force k_m f(x) + c g(x) dx/dt, g the flank engagement (1 in contact, 0 apart): 0 while the teeth are apart'),
     Variable(name='T_fp', vr=10, causality='output', variability='continuous', type='Real', enumeration=None, unit='N.m', display_unit=None, start=None, min=None, max=None, description='friction torque acting on the pinion'),
     Variable(name='T_fg', vr=11, causality='output', variability='continuous', type='Real', enumeration=None, unit='N.m', display_unit=None, start=None, min=None, max=None, description='friction torque acting on the ring gear'),
     Variable(name='P_loss', vr=12, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='instantaneous conjunctional (flank friction) power loss'),

@@ -11,12 +11,31 @@ static double ramp_integral(double u, double eps)
     return 0.25 * (u * u + u * sqrt(u * u + eps * eps) + eps * eps * asinh(u / eps));
 }
 
+/* d ramp/du in [0, 1] */
+static double ramp_slope(double u, double eps) { return 0.5 * (1.0 + u / sqrt(u * u + eps * eps)); }
+
+void hg_backlash_flanks(const hg_backlash *bl, double x, int mode, hg_flank_split *s)
+{
+    s->f_d = s->f_b = s->g_d = s->g_b = 0.0;
+    if (bl->eps > 0.0) {
+        s->f_d = ramp(x - bl->b, bl->eps);
+        s->f_b = -ramp(-x - bl->b, bl->eps);
+        s->g_d = ramp_slope(x - bl->b, bl->eps);
+        s->g_b = ramp_slope(-x - bl->b, bl->eps);
+    } else if (mode == HG_MODE_DRIVE) {
+        s->f_d = x - bl->b;
+        s->g_d = 1.0;
+    } else if (mode == HG_MODE_BACK) {
+        s->f_b = x + bl->b;
+        s->g_b = 1.0;
+    }
+}
+
 double hg_backlash_f(const hg_backlash *bl, double x, int mode)
 {
-    if (bl->eps > 0.0) return ramp(x - bl->b, bl->eps) - ramp(-x - bl->b, bl->eps);
-    if (mode == HG_MODE_DRIVE) return x - bl->b;
-    if (mode == HG_MODE_BACK) return x + bl->b;
-    return 0.0;
+    hg_flank_split s;
+    hg_backlash_flanks(bl, x, mode, &s);
+    return s.f_d + s.f_b;
 }
 
 double hg_backlash_potential(const hg_backlash *bl, double x, int mode)

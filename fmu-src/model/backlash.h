@@ -17,6 +17,17 @@ typedef struct {
  * a C-infinity ramp that differs from the exact f by at most eps/2 (at x = +-b). */
 double hg_backlash_f(const hg_backlash *bl, double x, int mode);
 
+/* The dead zone by flank: f = f_d + f_b, the drive flank's share f_d >= 0 (x > b) and the back
+ * flank's f_b <= 0 (x < -b), and each flank's engagement g = df/dx in [0, 1]: 1 in contact and 0
+ * apart for the exact dead zone (by `mode`), the slope of the smooth ramp when eps > 0. The mesh
+ * damper acts through the engagement, so that a damper between separated teeth does not act. */
+typedef struct {
+    double f_d, f_b; /* [m] */
+    double g_d, g_b; /* [1] */
+} hg_flank_split;
+
+void hg_backlash_flanks(const hg_backlash *bl, double x, int mode, hg_flank_split *s);
+
 /* Potential Phi(x) with dPhi/dx = f(x) and Phi(0) = 0 [m^2]: the mesh spring stores k_m Phi. */
 double hg_backlash_potential(const hg_backlash *bl, double x, int mode);
 

@@ -19,7 +19,36 @@ static double shaft2_torque(const hg_dyn_params *p, const double *y)
     return p->k_t2 * y[HG_Y_TWIST2] + p->c_t2 * (y[HG_Y_W_G] - y[HG_Y_W_W]);
 }
 
-/* Mesh stiffness, radii, transmission error, f(x), x' and the elastic mesh load. */
+/* Without backlash (or with a rigid mesh) both flanks touch: the net force loads one of them. */
+static void net_force_loads(hg_dyn_eval *ev)
+{
+    ev->W_drive = ev->W_t > 0.0 ? ev->W_t : 0.0;
+    ev->W_coast = ev->W_t < 0.0 ? -ev->W_t : 0.0;
+}
+
+/* Contact loads of the flanks. With backlash each flank carries its spring share and the damper
+ * acts through its engagement (a damper between separated teeth does not act); a flank in contact
+ * whose force turns tensile (teeth parting faster than the damper allows) carries no load. */
+static void flank_loads(const hg_dyn_params *p, int mode, double x, hg_dyn_eval *ev)
+{
+    hg_flank_split fl;
+    double W_d, W_b;
+    if (p->mesh != HG_MESH_MODEL_VARYING) {
+        ev->g = 1.0;
+        ev->W_t = ev->mesh.k_m * ev->f + p->c_m * ev->xdot;
+        net_force_loads(ev);
+        return;
+    }
+    hg_backlash_flanks(&p->backlash, x, mode, &fl);
+    W_d = ev->mesh.k_m * fl.f_d + p->c_m * fl.g_d * ev->xdot;
+    W_b = ev->mesh.k_m * fl.f_b + p->c_m * fl.g_b * ev->xdot;
+    ev->g = fl.g_d + fl.g_b;
+    ev->W_t = W_d + W_b;
+    ev->W_drive = W_d > 0.0 ? W_d : 0.0;
+    ev->W_coast = W_b < 0.0 ? -W_b : 0.0;
+}
+
+/* Mesh stiffness, radii, transmission error, f(x), x' and the flank loads. */
 static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn_eval *ev)
 {
     double w_p = y[HG_Y_W_P];
@@ -38,16 +67,17 @@ static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn
     if (p->mesh == HG_MESH_MODEL_RIGID) return;
     /* eq. 25: x' = R_p w_p - R_g w_g - e_0', e_0' = (de_0/dtheta) N_p w_p */
     ev->xdot = ev->mesh.R_p * w_p - ev->R_g * y[HG_Y_W_G] - ev->mesh.de_0 * p->gear->N_p * w_p;
-    ev->W_t = ev->mesh.k_m * ev->f + p->c_m * ev->xdot;
+    flank_loads(p, mode, y[HG_Y_X], ev);
 }
 
 /* Friction torques from the sliding direction (docs/physics.md §9.1): T_fp w_p + T_fg w_g = -P_loss.
- * Pairs carry |W_t|: on the coast flank the drive flank's contact data stand in for its own. */
+ * Pairs carry the flank loads, so nothing while the teeth are apart; on the coast flank the
+ * drive flank's contact data stand in for its own. */
 static void pair_friction(const hg_dyn_params *p, const hg_inputs *u, const double *y,
                           int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
     int k, with_contact = p->friction.model != HG_FRICTION_MODEL_NONE || all_pairs;
-    double w_p = y[HG_Y_W_P], w_g = y[HG_Y_W_G], W = fabs(ev->W_t);
+    double w_p = y[HG_Y_W_P], w_g = y[HG_Y_W_G], W = ev->W_drive + ev->W_coast;
     hg_pair_geometry geo;
     hg_gearset_pairs(p->gear, p->gear->N_p * y[HG_Y_PHI_P], with_contact, &geo);
     for (k = 0; k < HG_MAX_PAIRS; k++) {
@@ -106,9 +136,11 @@ static void rigid_mesh(const hg_dyn_params *p, const hg_inputs *u, const double 
     double T_1 = shaft1_torque(p, y), T_2 = shaft2_torque(p, y), acc;
     acc = (T_1 - T_2 / i) / J;
     ev->W_t = (p->I_g * acc / i + T_2) / ev->R_g;
+    net_force_loads(ev);
     losses(p, u, y, all_pairs, T_c_warm, ev);
     ev->acc_p = (T_1 - T_2 / i + ev->T_fp + ev->T_fg / i) / J;
     ev->W_t = (p->I_g * ev->acc_p / i + T_2 - ev->T_fg) / ev->R_g;
+    net_force_loads(ev);
 }
 
 static void efficiency(const double *y, const hg_inputs *u, hg_dyn_eval *ev)
@@ -140,7 +172,7 @@ void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const
     else
         losses(p, u, y, all_pairs, T_c_warm, ev);
     efficiency(y, u, ev);
-    ev->P_damp = p->c_t1 * d1 * d1 + p->c_t2 * d2 * d2 + p->c_m * ev->xdot * ev->xdot;
+    ev->P_damp = p->c_t1 * d1 * d1 + p->c_t2 * d2 * d2 + p->c_m * ev->g * ev->xdot * ev->xdot;
     if (p->mesh == HG_MESH_MODEL_VARYING) {
         double N_p_w = p->gear->N_p * y[HG_Y_W_P];
         ev->P_exc = -ev->W_t * ev->mesh.de_0 * N_p_w + ev->mesh.dk_m * N_p_w * ev->Phi;

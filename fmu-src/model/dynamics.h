@@ -45,7 +45,10 @@ typedef struct {
     double f;          /* backlash function f(x) [m] */
     double Phi;        /* its potential [m^2]: the mesh spring stores k_m Phi */
     double xdot;       /* dx/dt [m/s] */
-    double W_t;        /* mesh load k_m f + c xdot [N] */
+    double g;          /* flank engagement df/dx in [0, 1]: the mesh damper acts through it */
+    double W_t;        /* net mesh force k_m f + c g xdot, positive pushing the drive flank [N] */
+    double W_drive;    /* compressive load on the drive flank, max(k_m f_d + c g_d xdot, 0) [N] */
+    double W_coast;    /* compressive load on the back flank, max(-(k_m f_b + c g_b xdot), 0) [N] */
     double T_w;        /* wheel-end torque, input or governor [N m] */
     double T_fp, T_fg; /* friction torques on pinion and gear [N m] */
     double acc_p;      /* pinion acceleration of the rigid mesh [rad/s^2] */

@@ -56,9 +56,46 @@ static void smoothed(void)
     CHECK(fabs(hg_backlash_f(&bl, 0.0, 0)) < 1e-18);
 }
 
+/* The split by flank: the shares add up to f, each flank's engagement is its share's slope, and
+ * separated teeth have zero engagement (the mesh damper does not act between them). */
+static void flanks(void)
+{
+    const double b = 70e-6, eps = 2e-6;
+    const hg_backlash sm = {b, eps}, ex = {b, 0.0};
+    const int modes[] = {HG_MODE_BACK, HG_MODE_FREE, HG_MODE_DRIVE};
+    hg_flank_split s, sp, sn;
+    double x, d = 1e-10;
+    int i;
+    for (x = -200e-6; x <= 200e-6; x += 0.37e-6) {
+        hg_backlash_flanks(&sm, x, 0, &s);
+        hg_backlash_flanks(&sm, x + d, 0, &sp);
+        hg_backlash_flanks(&sm, x - d, 0, &sn);
+        CHECK(s.f_d + s.f_b == hg_backlash_f(&sm, x, 0));
+        CHECK(s.f_d >= 0.0 && s.f_b <= 0.0);
+        CHECK_CLOSE(s.g_d, (sp.f_d - sn.f_d) / (2 * d), 1e-5, 1e-9);
+        CHECK_CLOSE(s.g_b, (sp.f_b - sn.f_b) / (2 * d), 1e-5, 1e-9);
+        CHECK(s.g_d >= 0.0 && s.g_d <= 1.0 && s.g_b >= 0.0 && s.g_b <= 1.0);
+        /* ten smoothing widths inside the gap the engagement is (eps/2(b - x))^2 +
+         * (eps/2(b + x))^2 to leading order (the slope of the ramp far below its corner) */
+        if (fabs(x) < b - 10 * eps)
+            CHECK_CLOSE(s.g_d + s.g_b, pow(eps / (2 * (b - x)), 2) + pow(eps / (2 * (b + x)), 2),
+                        0.02, 0.0);
+    }
+    for (i = 0; i < 3; i++) {
+        hg_backlash_flanks(&ex, 10e-6 + 100e-6 * (modes[i]), modes[i], &s);
+        CHECK(s.f_d + s.f_b == hg_backlash_f(&ex, 10e-6 + 100e-6 * modes[i], modes[i]));
+        CHECK(s.g_d == (modes[i] == HG_MODE_DRIVE) && s.g_b == (modes[i] == HG_MODE_BACK));
+        CHECK(s.f_d == (modes[i] == HG_MODE_DRIVE ? 40e-6 : 0.0) || fabs(s.f_d - 40e-6) < 1e-18);
+    }
+    hg_backlash_flanks(&ex, -90e-6, HG_MODE_BACK, &s);
+    CHECK_CLOSE(s.f_b, -20e-6, 1e-12, 0.0);
+    CHECK(s.f_d == 0.0 && s.g_d == 0.0);
+}
+
 int main(void)
 {
     exact();
     smoothed();
+    flanks();
     CHECK_DONE();
 }

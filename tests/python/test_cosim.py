@@ -242,7 +242,11 @@ def test_container_of_gear_and_vehicle(run, tmp_path):
     box = cd.make_container(cd.Scene(), h, tmp_path)
     assert validate_fmu(str(box)) == []
     r = cd.run_container(cd.Scene(), h, box)
+    # its parallel scheduling is Jacobi too, but its calls restart the gear's integrator at other
+    # times: while the pinion flies free through the backlash at the launch (no mesh damper
+    # between separated teeth) the two agree to the integrator's tolerance, not to round-off
+    # (measured 4e-6 at rtol 1e-6, 5e-7 at 1e-8, 8e-12 at 1e-10)
     for name, d in cd.difference(r, run("fmpy", h)).items():
-        assert d["rel"] < 1e-8, name  # its parallel scheduling is Jacobi too
+        assert d["rel"] < 2e-5, name
     e = cd.energy_balance(r)
     assert abs(e["residual"]) < 1e-3 * e["W_Ts"]
