@@ -10,14 +10,12 @@ mesh cycles from the FMU's energy audit: eta = 1 - dE_friction / dE_input.
     hypoid effmap --gear-set 2 --lubricant-file my.txt --out my_map.txt
 """
 
-import argparse
 import math
 import os
 import pathlib
-import sys
 import time
 
-from hypoid import parallel
+from hypoid import cliargs, parallel
 from hypoid.paths import user_path
 from hypoid.values import RPM
 
@@ -105,8 +103,8 @@ def write_map(fmu, out, params, workers, grid):
 
 
 def main(argv):
-    ap = argparse.ArgumentParser(prog="hypoid effmap", description=__doc__.splitlines()[0])
-    ap.add_argument("--fmu", default="build/HypoidGearPair.fmu")
+    ap = cliargs.Parser("hypoid effmap", __doc__)
+    ap.add_fmu()
     ap.add_argument("--all", action="store_true", help="built-in maps of gear sets 1-3 x lubricants")
     ap.add_argument("--out-dir", default="resources/maps")
     ap.add_argument("--out", help="one map file")
@@ -117,13 +115,10 @@ def main(argv):
                     help="worker processes (0: in this process)")
     ap.add_argument("--quick", action="store_true", help="a 3 x 3 x 2 grid, for tests")
     args = ap.parse_args(argv)
-    args.fmu = user_path(args.fmu)
+    cliargs.fmu_path(args.fmu)
     grid = (SPEEDS_RPM, TORQUES, TEMPERATURES_C)
     if args.quick:
         grid = ([500, 2000, 4000], [50, 100, 200], [40, 100])
-    if not pathlib.Path(args.fmu).exists():
-        print(f"hypoid effmap: {args.fmu} not found (build it first)", file=sys.stderr)
-        return 2
     jobs = []
     if args.all:
         out_dir = pathlib.Path(args.out_dir)

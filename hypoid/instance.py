@@ -85,6 +85,7 @@ class Instance:
         self.md, self.table = _description(self.unzip_dir)
         self.vars = self.table.variables
         self.messages = []
+        self._n_logged = 0  # messages logged so far (the list keeps only the last ones)
         self.keep_messages = keep_messages
         self._callbacks = self._make_callbacks()
         self.slave = FMU2Slave(guid=guid or self.md.guid, unzipDirectory=self.unzip_dir,
@@ -104,6 +105,7 @@ class Instance:
         return cb
 
     def _log(self, component, instance, status, category, message):
+        self._n_logged += 1
         self.messages.append((status, category.decode(errors="replace"),
                               message.decode(errors="replace").replace("%%", "%")))
         if len(self.messages) > self.keep_messages:
@@ -113,11 +115,16 @@ class Instance:
         return [m for m in self.messages if m[0] >= ERROR]
 
     def _call(self, fn, *args, **kwargs):
+        """An FMI call; a failure raises FmuError with the messages the FMU logged during it (or
+        fmpy's text when it logged none)."""
+        before = self._n_logged
         try:
             return fn(*args, **kwargs)
         except FMICallException as e:
-            tail = " | ".join(m[2] for m in self.messages[-3:])
-            raise FmuError(f"{e}" + (f": {tail}" if tail else ""), e.function, e.status) from None
+            new = self.messages[len(self.messages) - min(self._n_logged - before,
+                                                         len(self.messages)):]
+            said = [m[2] for m in new if m[0] >= ERROR] or [m[2] for m in new]
+            raise FmuError(" | ".join(said[-3:]) or str(e), e.function, e.status) from None
 
     # ------------------------------------------------------------------ values
     def ref(self, name):

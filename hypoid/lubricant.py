@@ -25,10 +25,11 @@ lubricants of the paper (Table 2) in resources/lubricants/. The file format is d
 docs/data-files.md.
 """
 
-import argparse
 import math
 import os
 import sys
+
+from hypoid import cliargs
 
 C0 = 273.15  # K at 0 degC
 T_THIRD = 150.0  # degC, third point of the Vogel fit
@@ -355,7 +356,7 @@ def write_builtin(out_dir=None):
 
 
 def _parser():
-    p = argparse.ArgumentParser(
+    p = cliargs.Parser(
         prog="hypoid lubricant",
         description="Write a lubricant data file (hypoid-lubricant 1) from data-sheet values. "
                     "The Vogel law is fitted to KV40/KV100/rho15 as in docs/physics.md §4.1.")
@@ -389,11 +390,7 @@ def _parser():
 
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
-    parser = _parser()
-    try:
-        args = parser.parse_args(argv)
-    except SystemExit as exc:  # argparse has printed its message
-        return int(exc.code or 0)
+    args = _parser().parse_args(argv)
     try:
         if args.builtin:
             for path in write_builtin(args.out_dir):
@@ -416,10 +413,11 @@ def main(argv=None):
               f"b = {values['vogel_b']:.1f} K, c = {values['vogel_c_degc']:.2f} degC"
               + (f"; estimated: {', '.join(marked)}" if marked else ""))
         return 0
-    except (LubricantError, OSError) as exc:
-        print(f"hypoid lubricant: error: {exc}", file=sys.stderr)
-        return 2
+    except LubricantError as exc:
+        raise cliargs.UsageError(str(exc)) from None
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    from hypoid import cli
+
+    sys.exit(cli.main(["lubricant", *sys.argv[1:]]))

@@ -1,23 +1,38 @@
-"""`hypoid regress`: run a small fixed set of scenarios and compare their outputs with the
-reference in tests/regression/reference.csv, within the tolerances of
-tests/regression/tolerances.csv (documented in tests/regression/README.md).
+"""`hypoid regress`: run a set of scenarios and compare their outputs with a reference, within
+per-quantity tolerances. Exit status 1 when anything moved beyond its tolerance.
 
-    hypoid regress                 # compare; exit status 1 when anything moved beyond tolerance
-    hypoid regress --update        # rewrite the reference deliberately (review the diff, commit)
+    hypoid regress                        # the built-in scenarios against tests/regression/
+    hypoid regress --update               # rewrite the reference deliberately (review, commit)
+    hypoid regress --scenarios mine.toml --update   # make a reference of your own scenarios
+    hypoid regress --scenarios mine.toml            # ... and compare with it later
 
-Each scenario runs a fixed time (no steady-state detection, so only the FMU is under test):
-SETTLE_CYCLES mesh cycles, then RECORD_CYCLES mesh cycles sampled 32 times per cycle.
+A scenarios file of your own is TOML, one table per scenario with the start values by name
+(any parameter or input, enumeration items by name, speed_rpm required):
+
+    [hot_oil_3000rpm]
+    speed_rpm = 3000
+    T_s = 150
+    T_bath = 363.15
+    lubricant_file = "my_oil.txt"
+
+Its reference goes to <file>.reference.csv beside it unless --reference names another file; the
+tolerances are tests/regression/tolerances.csv unless --tolerances names another file (columns
+quantity, rel, abs; documented in tests/regression/README.md). Each scenario runs a fixed time
+(no steady-state detection, so only the FMU is under test): 60 mesh cycles, then 20 mesh cycles
+sampled 32 times per cycle. The quantities compared are those of the study tables.
 """
 
-import argparse
 import csv
 import json
 import math
 import pathlib
 import sys
+import tomllib
 
-from hypoid import metrics, steady
+from hypoid import cliargs, metrics, steady
 from hypoid.instance import RPM, SPEED_KEY, Instance
+from hypoid.paths import user_path
+from hypoid.values import TABLE
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 REF_DIR = ROOT / "tests" / "regression"
@@ -54,12 +69,33 @@ def run_scenario(inst, params):
     return {q: row[q] for q in QUANTITIES}
 
 
-def run_all(fmu_path):
+def run_all(fmu_path, scenarios=SCENARIOS):
     inst = Instance(fmu_path)
     try:
-        return {name: run_scenario(inst, p) for name, p in SCENARIOS.items()}
+        return {name: run_scenario(inst, p) for name, p in scenarios.items()}
     finally:
         inst.close()
+
+
+def read_scenarios(path):
+    """A user's scenarios file (TOML, one table per scenario), checked against the variables."""
+    try:
+        with open(path, "rb") as fh:
+            data = tomllib.load(fh)
+    except tomllib.TOMLDecodeError as e:
+        raise cliargs.UsageError(f"{path}: not a TOML scenarios file ({e})") from None
+    scenarios = {}
+    for name, params in data.items():
+        if not isinstance(params, dict) or SPEED_KEY not in params:
+            raise cliargs.UsageError(f"{path}: scenario [{name}] needs a table of start values "
+                                     f"with {SPEED_KEY} (see hypoid regress --help)")
+        try:
+            scenarios[name] = {k: TABLE.parse(k, v) for k, v in params.items()}
+        except ValueError as e:
+            raise cliargs.UsageError(f"{path}: scenario [{name}]: {e}") from None
+    if not scenarios:
+        raise cliargs.UsageError(f"{path}: no scenarios")
+    return scenarios
 
 
 def read_tolerances(path=REF_DIR / "tolerances.csv"):
@@ -76,25 +112,30 @@ def read_reference(path=REF_DIR / "reference.csv"):
     return ref, params
 
 
-def write_reference(values, path=REF_DIR / "reference.csv"):
+def _params_text(params):
+    return json.dumps(params, sort_keys=True)
+
+
+def write_reference(values, path=REF_DIR / "reference.csv", scenarios=SCENARIOS):
+    path = pathlib.Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     with open(path, "w", newline="") as fh:
         w = csv.writer(fh)
         w.writerow(["scenario", "quantity", "value", "params"])
         for name, qs in values.items():
-            p = json.dumps(SCENARIOS[name], sort_keys=True)
+            p = _params_text(scenarios[name])
             for q, v in qs.items():
                 w.writerow([name, q, repr(float(v)), p])
 
 
-def compare(values, ref, ref_params, tol):
+def compare(values, ref, ref_params, tol, scenarios=SCENARIOS):
     """Rows (scenario, quantity, reference, value, allowed, ok) and a list of problems."""
     rows, problems = [], []
-    for name in SCENARIOS:
+    for name in scenarios:
         if name not in ref:
             problems.append(f"{name}: no reference (run `hypoid regress --update`)")
             continue
-        if ref_params.get(name) != json.dumps(SCENARIOS[name], sort_keys=True):
+        if ref_params.get(name) != _params_text(scenarios[name]):
             problems.append(f"{name}: the reference was made for other parameters "
                             f"({ref_params.get(name)})")
         for q in QUANTITIES:
@@ -110,28 +151,48 @@ def compare(values, ref, ref_params, tol):
     return rows, problems
 
 
-def main(argv):
-    ap = argparse.ArgumentParser(prog="hypoid regress", description=__doc__.splitlines()[0])
-    ap.add_argument("--fmu", default=str(ROOT / "build" / "HypoidGearPair.fmu"))
+def _parser():
+    ap = cliargs.Parser("hypoid regress", __doc__)
+    ap.add_fmu()
+    ap.add_argument("--scenarios", type=user_path,
+                    help="TOML file of your own scenarios (default: the built-in ones)")
+    ap.add_argument("--reference", type=user_path,
+                    help="reference CSV (default: tests/regression/reference.csv, or "
+                         "<scenarios>.reference.csv with --scenarios)")
+    ap.add_argument("--tolerances", type=user_path, default=str(REF_DIR / "tolerances.csv"),
+                    help="tolerances CSV (default: tests/regression/tolerances.csv)")
     ap.add_argument("--update", action="store_true", help="rewrite the reference values")
-    args = ap.parse_args(argv)
-    values = run_all(args.fmu)
+    return ap
+
+
+def main(argv):
+    args = _parser().parse_args(argv)
+    scenarios = read_scenarios(args.scenarios) if args.scenarios else SCENARIOS
+    reference = pathlib.Path(args.reference or (
+        pathlib.Path(args.scenarios).with_suffix(".reference.csv") if args.scenarios
+        else REF_DIR / "reference.csv"))
+    tolerances = read_tolerances(args.tolerances)
+    values = run_all(cliargs.fmu_path(args.fmu), scenarios)
     if args.update:
-        old = read_reference()[0] if (REF_DIR / "reference.csv").exists() else {}
-        write_reference(values)
+        old = read_reference(reference)[0] if reference.exists() else {}
+        write_reference(values, reference, scenarios)
         moved = sum(1 for n, qs in values.items() for q, v in qs.items()
                     if n in old and not math.isclose(v, old[n].get(q, math.nan), rel_tol=1e-12))
-        print(f"hypoid regress: wrote {REF_DIR / 'reference.csv'} ({len(values)} scenarios; "
+        print(f"hypoid regress: wrote {reference} ({len(values)} scenarios; "
               f"{moved} values changed)")
         return 0
-    ref, ref_params = read_reference()
-    _, problems = compare(values, ref, ref_params, read_tolerances())
+    if not reference.exists():
+        raise cliargs.UsageError(f"{reference}: no reference yet; make it with --update")
+    ref, ref_params = read_reference(reference)
+    _, problems = compare(values, ref, ref_params, tolerances, scenarios)
     for p in problems:
         print("MOVED " + p)
-    print(f"hypoid regress: {len(SCENARIOS)} scenarios, "
+    print(f"hypoid regress: {len(scenarios)} scenarios against {reference}, "
           f"{'all within tolerance' if not problems else f'{len(problems)} problems'}")
     return 1 if problems else 0
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    from hypoid import cli
+
+    sys.exit(cli.main(["regress", *sys.argv[1:]]))

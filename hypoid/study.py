@@ -9,14 +9,12 @@ Options: --scheduler ADDRESS (a dask.distributed scheduler; default a local clus
 --workers processes, 2), --fmu PATH. A re-run into the same --out resumes.
 """
 
-import argparse
 import json
 import pathlib
-import sys
 import time
 from dataclasses import dataclass, field
 
-from hypoid import parallel, steady, sweep
+from hypoid import cliargs, parallel, steady, sweep
 from hypoid.instance import SPEED_KEY
 from hypoid.paths import user_path
 
@@ -157,21 +155,15 @@ def run(name, out, fmu_path, scheduler=None, workers=2):
 
 
 def main(argv):
-    ap = argparse.ArgumentParser(prog="hypoid study", description=__doc__.splitlines()[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog="\n".join(__doc__.splitlines()[1:]))
+    ap = cliargs.Parser("hypoid study", __doc__)
     ap.add_argument("name", choices=sorted(SPECS), nargs="?", default="default")
-    ap.add_argument("--out", default="results")
-    ap.add_argument("--fmu", default="build/HypoidGearPair.fmu")
+    ap.add_argument("--out", type=user_path, default=user_path("results"))
+    ap.add_fmu()
     ap.add_argument("--scheduler", help="dask.distributed scheduler address")
     ap.add_argument("--workers", type=int, default=2, help="local worker processes; 0 = serial")
     ap.add_argument("--no-report", action="store_true", help="tables only, no plots or report")
     args = ap.parse_args(argv)
-    args.fmu, args.out = user_path(args.fmu), user_path(args.out)
-    if not pathlib.Path(args.fmu).exists():
-        print(f"hypoid study: {args.fmu} not found (build it with scripts/setup.sh)",
-              file=sys.stderr)
-        return 2
+    cliargs.fmu_path(args.fmu)
     pts, cont, info = run(args.name, args.out, args.fmu, args.scheduler, args.workers)
     out = pathlib.Path(args.out)
     cpu = float(pts["cpu_s"].sum()) + (float(cont["cpu_s"].sum()) if len(cont) else 0.0)

@@ -9,16 +9,13 @@ or varied by name (enumerations by item name or number). A re-run into the same 
 points already done; change --out (or delete it) after changing the settings.
 """
 
-import argparse
 import itertools
 import os
 import pathlib
 import sys
 import time
 
-import numpy as np
-
-from hypoid import continuation, parallel, results, steady
+from hypoid import cliargs, continuation, parallel, results, steady
 from hypoid.instance import SPEED_KEY, normalize, start_values
 from hypoid.paths import user_path
 
@@ -30,33 +27,6 @@ POINT_ORDER = ("gear_set", "lubricant", "lubricant_file", "friction_model", "mes
 
 
 # ---------------------------------------------------------------------------- grids
-def parse_values(text):
-    """'1000:5000:250' (inclusive range), '50,100,200' (list) or a single value."""
-    if text.count(":") == 2:
-        a, b, s = (float(x) for x in text.split(":"))
-        n = int(np.floor((b - a) / s + 1e-9)) + 1
-        return [_num(a + i * s) for i in range(n)]
-    return [parse_scalar(x) for x in text.split(",")]
-
-
-def parse_scalar(text):
-    """A number where the text is one (int when integral), else the text."""
-    return _num(text) if _is_num(text) else text
-
-
-def _is_num(x):
-    try:
-        float(x)
-        return True
-    except (TypeError, ValueError):
-        return False
-
-
-def _num(x):
-    x = float(x)
-    return int(x) if x.is_integer() else round(x, 10)
-
-
 def grid(base, vary):
     """Cartesian product of the varied values over the base parameters."""
     names = list(vary)
@@ -187,14 +157,12 @@ def run_sweeps(sweeps, out, fmu, client=None, settings=steady.Settings(), ramp_t
 
 # ---------------------------------------------------------------------------- CLI
 def _parser():
-    ap = argparse.ArgumentParser(prog="hypoid sweep", description=__doc__.splitlines()[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog="\n".join(__doc__.splitlines()[1:]))
-    ap.add_argument("--fmu", default="build/HypoidGearPair.fmu")
-    ap.add_argument("--out", required=True, help="results folder (resumes if it exists)")
-    ap.add_argument("--set", nargs="*", default=[], metavar="NAME=VALUE")
-    ap.add_argument("--vary", action="append", default=[], metavar="NAME=VALUES",
-                    help="values a:b:step (inclusive) or v1,v2,...; repeat for a product grid")
+    ap = cliargs.Parser("hypoid sweep", __doc__)
+    ap.add_fmu()
+    ap.add_argument("--out", required=True, type=user_path,
+                    help="results folder (resumes if it exists)")
+    ap.add_set()
+    ap.add_vary()
     ap.add_argument("--continuation", action="store_true",
                     help="speed_rpm is swept up then down in one run per other-parameter combo")
     ap.add_argument("--ramp-time", type=float, default=0.1, help="s per speed change (0.1)")
@@ -207,34 +175,17 @@ def _parser():
     return ap
 
 
-def parse_assignments(items):
-    """['T_s=200', 'gear_set=2'] -> {'T_s': '200', 'gear_set': '2'} (texts)."""
-    out = {}
-    for item in items:
-        name, sep, text = item.partition("=")
-        if not sep or not name:
-            raise ValueError(f"expected NAME=VALUE, got {item!r}")
-        out[name] = text
-    return out
-
-
 def main(argv):
     args = _parser().parse_args(argv)
-    args.fmu, args.out = user_path(args.fmu), user_path(args.out)
-    try:
-        base = {k: parse_scalar(v) for k, v in parse_assignments(args.set).items()}
-        vary = {k: parse_values(v) for k, v in parse_assignments(args.vary).items()}
-        settings = steady.Settings(samples_per_cycle=args.samples_per_cycle,
-                                   window_cycles=args.window_cycles,
-                                   max_settle_time=args.max_settle_time)
-        fmu = parallel.FmuRef(args.fmu)
-        speeds = vary.pop(SPEED_KEY, None) if args.continuation else None
-        if args.continuation and not speeds:
-            raise ValueError("--continuation needs --vary speed_rpm=...")
-        points = complete(grid(base, vary))
-    except (ValueError, KeyError, OSError) as e:
-        print(f"hypoid sweep: {e}", file=sys.stderr)
-        return 2
+    base, vary = cliargs.parse_set(args.set), cliargs.parse_vary(args.vary)
+    settings = steady.Settings(samples_per_cycle=args.samples_per_cycle,
+                               window_cycles=args.window_cycles,
+                               max_settle_time=args.max_settle_time)
+    fmu = parallel.FmuRef(cliargs.fmu_path(args.fmu))
+    speeds = vary.pop(SPEED_KEY, None) if args.continuation else None
+    if args.continuation and not speeds:
+        raise cliargs.UsageError("--continuation needs --vary speed_rpm=...")
+    points = complete(grid(base, vary))
     t0 = time.time()
     with parallel.executor(args.scheduler, args.workers) as client:
         if args.continuation:

@@ -9,15 +9,14 @@
 The table format is documented in docs/tca-import.md, the gear-set format in docs/data-files.md.
 """
 
-import argparse
 import csv
 import math
 import os
-import sys
 from dataclasses import dataclass
 
 import numpy as np
 
+from hypoid import cliargs
 from hypoid import tca_surrogate as sur
 from hypoid.gearset_file import (CONTACT_SERIES, MESH_SERIES, PAIR_SERIES, UNITS, Gearset,
                                  write_gearset)
@@ -149,7 +148,8 @@ def read_table(path):
     """Parses a TCA table (docs/tca-import.md); checks cells, not physics."""
     try:
         with open(path, newline="", encoding="utf-8") as f:
-            rows = [(line, [c.strip() for c in row]) for line, row in _csv_rows(csv.reader(f))]
+            reader = csv.reader(f, delimiter=_delimiter(f))
+            rows = [(line, [c.strip() for c in row]) for line, row in _csv_rows(reader)]
     except (csv.Error, UnicodeDecodeError) as err:
         raise TableError(f"{path}: not a readable CSV text file ({err})") from None
     header_at = next((i for i, (_, row) in enumerate(rows) if row[0] in ANGLE_COLUMNS), None)
@@ -166,6 +166,17 @@ def read_table(path):
     columns = {name: np.array([_cell(path, ln, name, row[i]) for ln, row in data], dtype=float)
                for i, name in enumerate(header)}
     return Table(path, meta, header[0], lines, columns)
+
+
+def _delimiter(f):
+    """The cell separator of a table: ',' or, as spreadsheets write in locales with a decimal
+    comma, ';' (or a tab): whichever of them occurs most in the first non-comment lines."""
+    start = f.tell()
+    lines = [ln for ln in (f.readline() for _ in range(50)) if ln.strip()
+             and not ln.lstrip().startswith("#")]
+    f.seek(start)
+    text = "".join(lines)
+    return max(",;\t", key=text.count) if text else ","
 
 
 def _csv_rows(reader):
@@ -213,7 +224,8 @@ def _cell(path, line, name, text):
             _fail(path, line, name, text, "blank cell; only ls and contact data may be blank")
         return math.nan
     try:
-        value = float(text)
+        value = float(text.replace(",", ".") if text.count(",") == 1 and "." not in text
+                      else text)  # a decimal comma (tables separated by ';')
     except ValueError:
         _fail(path, line, name, text, "not a number")
     if math.isnan(value):
@@ -497,7 +509,7 @@ def export_csv(set_no, path, speed_rpm=2000.0, rows=360):
 # --- command line --------------------------------------------------------------------------------
 
 def _parser():
-    p = argparse.ArgumentParser(prog="hypoid tca", description=__doc__.split("\n\n")[0])
+    p = cliargs.Parser("hypoid tca", __doc__)
     sub = p.add_subparsers(dest="command", required=True)
     s = sub.add_parser("surrogate", help="gear-set files of the paper's sets 1-3 (docs/physics.md §10)")
     which = s.add_mutually_exclusive_group(required=True)
@@ -550,13 +562,9 @@ def _run(args):
 
 
 def main(argv):
-    try:
-        args = _parser().parse_args(argv)
-    except SystemExit as stop:  # --help or a usage error, already printed by argparse
-        return stop.code
+    args = _parser().parse_args(argv)
     try:
         _run(args)
-    except (ValueError, OSError) as err:
-        print(f"hypoid tca: error: {err}", file=sys.stderr)
-        return 2
+    except ValueError as err:  # TableError, GearsetFileError: the message names file and line
+        raise cliargs.UsageError(str(err)) from None
     return 0

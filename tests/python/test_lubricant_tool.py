@@ -145,16 +145,20 @@ def test_unfittable_viscosities():
 
 
 def test_main_reports_errors(tmp_path, capsys):
-    rc = lub.main(["--name", "x", "--kv40", "100", "--kv100", "150", "--rho15", "870",
-                   "--alpha-star", "16", "11", "9", "--hn-lambda", "1e-7", "--hn-alpha", "0.7",
-                   "--k-f", "0.18", "-o", str(tmp_path / "x.txt")])
+    from hypoid import cli
+
+    rc = cli.main(["lubricant", "--name", "x", "--kv40", "100", "--kv100", "150", "--rho15",
+                   "870", "--alpha-star", "16", "11", "9", "--hn-lambda", "1e-7", "--hn-alpha",
+                   "0.7", "--k-f", "0.18", "-o", str(tmp_path / "x.txt")])
     assert rc == 2
     err = capsys.readouterr().err
-    assert "hypoid lubricant: error:" in err and "KV100" in err
+    assert err.startswith("hypoid lubricant: ") and "KV100" in err and len(err.splitlines()) == 1
     assert not (tmp_path / "x.txt").exists()
-    assert lub.main(["--name", "x"]) == 2
+    assert cli.main(["lubricant", "--name", "x"]) == 2
     assert "missing --kv40" in capsys.readouterr().err
-    assert lub.main(["--kv40", "abc"]) == 2  # argparse: not a number
+    assert cli.main(["lubricant", "--kv40", "abc"]) == 2  # argparse: not a number
+    err = capsys.readouterr().err
+    assert "--kv40" in err and "abc" in err and len(err.splitlines()) == 1
 
 
 # ------------------------------------------------------------------ a bare data sheet (issue 13.6)

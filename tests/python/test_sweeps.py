@@ -9,7 +9,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from hypoid import continuation, lubricant, parallel, results, steady, study, sweep
+from hypoid import cliargs, continuation, lubricant, parallel, results, steady, study, sweep
 from hypoid.instance import Instance, normalize
 
 QUICK = steady.Settings(window_cycles=10, min_settle_cycles=10, max_settle_time=0.05)
@@ -25,9 +25,10 @@ def inst(fmu_path):
 
 # ---------------------------------------------------------------------------- grids
 def test_parse_values_and_grid():
-    assert sweep.parse_values("1000:2000:250") == [1000, 1250, 1500, 1750, 2000]
-    assert sweep.parse_values("50,100") == [50, 100]
-    assert sweep.parse_values("ehl_thermal,coulomb") == ["ehl_thermal", "coulomb"]
+    vary = cliargs.parse_vary(["speed_rpm=1000:2000:250", "T_s=50,100",
+                               "friction_model=ehl_thermal,2"])
+    assert vary == {"speed_rpm": [1000, 1250, 1500, 1750, 2000], "T_s": [50, 100],
+                    "friction_model": ["ehl_thermal", "coulomb"]}
     pts = sweep.grid({"gear_set": 2}, {"T_s": [50, 100], "speed_rpm": [1000, 2000, 3000]})
     assert len(pts) == 6 and all(p["gear_set"] == 2 for p in pts)
 

@@ -584,15 +584,36 @@ def test_table_may_start_inside_contact(tmp_path):
 
 
 def test_cli_prints_the_error_and_returns_2(tmp_path, capsys):
+    from hypoid import cli
+
     path = edit_table(tmp_path, set_cell("ls", 20, "-0.5"))
-    assert tca.main(["import", str(path), "--out", str(tmp_path / "x.txt")]) == 2
+    assert cli.main(["tca", "import", str(path), "--out", str(tmp_path / "x.txt")]) == 2
     err = capsys.readouterr().err
-    assert err.startswith("hypoid tca: error:") and "line 29" in err and "Traceback" not in err
+    assert err.startswith("hypoid tca: ") and "line 29" in err and len(err.splitlines()) == 1
     assert not (tmp_path / "x.txt").exists()
-    assert tca.main(["import", str(tmp_path / "missing.csv"), "--out", "x"]) == 2
-    assert tca.main(["surrogate", "--set", "1", "--out", str(tmp_path / "s.txt"),
+    assert cli.main(["tca", "import", str(tmp_path / "missing.csv"), "--out", "x"]) == 2
+    assert "missing.csv" in capsys.readouterr().err
+    assert cli.main(["tca", "surrogate", "--set", "1", "--out", str(tmp_path / "s.txt"),
                      "--harmonics", "40"]) == 2
-    assert tca.main(["surrogate", "--set", "9", "--out", "x"]) == 2  # argparse usage error
+    assert cli.main(["tca", "surrogate", "--set", "9", "--out", "x"]) == 2  # a usage error
+    err = capsys.readouterr().err
+    assert "--set" in err and "9" in err and len(err.splitlines()) == 2  # one line per call
+
+
+def test_import_of_a_semicolon_separated_table(tmp_path):
+    """Issue 13 item 9: spreadsheets in locales with a decimal comma write ';' between cells and
+    ',' as the decimal mark; such a table imports like the comma-separated original."""
+    table = tmp_path / "set1.csv"
+    assert tca.main(["export-csv", "--set", "1", "--out", str(table), "--rows", "360"]) == 0
+    text = table.read_text()
+    european = tmp_path / "set1_semicolons.csv"
+    european.write_text("\n".join(line if line.startswith("#") else
+                                  line.replace(",", ";").replace(".", ",")
+                                  for line in text.splitlines()) + "\n")
+    a, b = tmp_path / "a.txt", tmp_path / "b.txt"
+    assert tca.main(["import", str(table), "--out", str(a)]) == 0
+    assert tca.main(["import", str(european), "--out", str(b)]) == 0
+    assert a.read_text().replace(table.name, "") == b.read_text().replace(european.name, "")
 
 
 def test_cli_dispatch_writes_a_gear_set(tmp_path):
