@@ -250,6 +250,9 @@ def write_c(spec, directory):
           "    int has_min, has_max;",
           "    double min, max;",
           "    int input;            /* index k among the inputs (hg_input_vr), -1 if no input */",
+          "    const char *unit;     /* \"\" when it has none */",
+          "    const char *display_unit; /* NULL when it has none */",
+          "    double display_factor, display_offset; /* display = factor * value + offset */",
           "} hg_var_info;", "",
           "extern const hg_var_info hg_var_table[HG_NUM_VARS];", "",
           "/* The storage of a variable in v: the one way from the table to a field. */",
@@ -274,10 +277,21 @@ def write_c(spec, directory):
                  f'offsetof(hg_vars, {v["field"]}), {start_num}, {start_str}, '
                  f'{int(lo is not None)}, {int(hi is not None)}, '
                  f'{fmt_num(float(lo or 0))}, {fmt_num(float(hi or 0))}, '
-                 f'{input_index.get(vr, -1)}}},')
+                 f'{input_index.get(vr, -1)}, {c_units(spec, v)}}},')
     c += ["};", ""] + c_inputs_source(inputs)
     write_if_changed(f"{directory}/hg_vars.h", "\n".join(h))
     write_if_changed(f"{directory}/hg_vars.c", "\n".join(c))
+
+
+def c_units(spec, v):
+    """The unit fields of a variable's C table entry (messages quote values with their units)."""
+    unit = v.get("unit", "") if v["base"] == "Real" else ""
+    display = v.get("displayUnit") if unit else None
+    factor, offset = 1.0, 0.0
+    if display:
+        factor, offset = next((f, o) for d, f, o in spec.units[unit][1] if d == display)
+    name = f'"{display}"' if display else "NULL"
+    return f'"{unit}", {name}, {fmt_num(float(factor))}, {fmt_num(float(offset))}'
 
 
 # ---------------------------------------------------------------- README table

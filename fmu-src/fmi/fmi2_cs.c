@@ -451,16 +451,34 @@ static int settable(hg_instance *c, const char *fn, const hg_var_info *info)
     return 0;
 }
 
+/* "40 K (-233.15 degC)": a value with its unit and, when it has one, its display unit. */
+static void quote_value(char *buf, size_t n, const hg_var_info *info, double v)
+{
+    int len = snprintf(buf, n, "%.10g%s%s", v, *info->unit ? " " : "", info->unit);
+    if (info->display_unit && len > 0 && (size_t)len < n)
+        snprintf(buf + len, n - (size_t)len, " (%.6g %s)",
+                 info->display_factor * v + info->display_offset, info->display_unit);
+}
+
+/* "[200, 500] K": the declared range with its unit. */
+static void quote_range(char *buf, size_t n, const hg_var_info *info)
+{
+    snprintf(buf, n, "[%g, %g]%s%s", info->has_min ? info->min : -HUGE_VAL,
+             info->has_max ? info->max : HUGE_VAL, *info->unit ? " " : "", info->unit);
+}
+
 static int check_range(hg_instance *c, const char *fn, const hg_var_info *info, double v)
 {
+    char value[96], range[96];
     if (!isfinite(v)) {
         hg_log(c, fmi2Error, CAT_ERROR, "%s: %s = %g is not a finite number", fn, info->name, v);
         return -1;
     }
     if ((info->has_min && v < info->min) || (info->has_max && v > info->max)) {
-        hg_log(c, fmi2Error, CAT_ERROR, "%s: %s = %.10g is outside its range [%g, %g]", fn,
-               info->name, v, info->has_min ? info->min : -HUGE_VAL,
-               info->has_max ? info->max : HUGE_VAL);
+        quote_value(value, sizeof value, info, v);
+        quote_range(range, sizeof range, info);
+        hg_log(c, fmi2Error, CAT_ERROR, "%s: %s = %s is outside its range %s", fn, info->name,
+               value, range);
         return -1;
     }
     return 0;
@@ -601,6 +619,7 @@ static int check_extrapolation(hg_instance *c, double h)
     for (r = 0; r < HG_NUM_VARS; r++) {
         const hg_var_info *info = &hg_var_table[r];
         double u, du, end;
+        char value[96], range[96];
         if (info->causality != HG_INPUT || info->type != HG_REAL) continue;
         u = hg_real_value(c, info);
         du = derivative_of(c, info);
@@ -608,10 +627,11 @@ static int check_extrapolation(hg_instance *c, double h)
         if (du == 0.0 || (isfinite(end) && !(info->has_min && end < info->min) &&
                           !(info->has_max && end > info->max)))
             continue;
-        hg_log(c, fmi2Error, CAT_ERROR, "fmi2DoStep: input %s = %g with derivative %g /s would "
-               "reach %g over the step of %g s, outside its range [%g, %g]", info->name, u, du,
-               end, h, info->has_min ? info->min : -HUGE_VAL,
-               info->has_max ? info->max : HUGE_VAL);
+        quote_value(value, sizeof value, info, end);
+        quote_range(range, sizeof range, info);
+        hg_log(c, fmi2Error, CAT_ERROR, "fmi2DoStep: input %s = %g %s with derivative %g %s/s "
+               "would reach %s over the step of %g s, outside its range %s", info->name, u,
+               info->unit, du, info->unit, value, h, range);
         return -1;
     }
     return 0;

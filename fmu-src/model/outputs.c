@@ -50,6 +50,7 @@ void hg_outputs_write(const hg_setup *s, const hg_runtime *rt, long steps, long 
     v->w_g = y[HG_Y_W_G];
     v->w_w = y[HG_Y_W_W];
     v->DTE = y[HG_Y_X];
+    v->DTE_elastic = s->p.mesh == HG_MESH_MODEL_RIGID ? 0.0 : ev.f; /* eq. 24: f(x) */
     v->W_t = ev.W_t;
     v->T_fp = ev.T_fp;
     v->T_fg = ev.T_fg;

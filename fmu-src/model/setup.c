@@ -5,6 +5,7 @@
 
 #include "io/errmsg.h"
 #include "model/modal.h"
+#include "model/plausibility.h"
 
 #define GOVERNOR_ZETA 0.7     /* damping ratio of the speed governor's closed loop */
 #define STEPS_PER_MESH 30     /* CVODE's automatic max_step: 1/30 of a mesh period (docs/physics.md §8.8) */
@@ -215,6 +216,7 @@ int hg_setup_load(hg_setup *s, const char *resource_dir, const hg_logger *lg, hg
     ehl_params(s, v);
     if (load_map(s, resource_dir, v, err, errlen)) return -1;
     if (damping(s, lg, v, err, errlen)) return -1;
+    hg_plausibility_warn(v, lg);
     v->R_p0 = s->p.R_p0;
     v->k_m0 = s->p.k_m0;
     v->ratio = s->p.ratio;
