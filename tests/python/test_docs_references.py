@@ -60,7 +60,7 @@ def test_physics_document_has_the_cited_structure():
     for s in ["0", "1", "2.3", "3", "4.1", "4.5", "5.3", "6.6", "7", "8.1", "8.5", "8.8", "9.1",
               "9.2", "10.7", "11.3", "12", "13.1", "13.14", "14"]:
         assert s in sections, f"docs/physics.md has no section {s}"
-    assert decisions == {str(i) for i in range(1, 12)}
+    assert {str(i) for i in range(1, 12)} <= decisions
     text = PHYSICS.read_text(encoding="utf-8")
     cited = set()  # "Eq. 10", "Eqs. 20–25", "Eqs. 5, 6, 11"
     for group in re.findall(r"Eqs?\. (\d+(?:\s*(?:[–-]|,|and)\s*\d+)*)", text):
