@@ -9,10 +9,6 @@ own resources (`lubricants/OS265962.txt`) still work. docs/integration.md, "Rela
 
 import os
 
-from hypoid.variables import VARIABLES
-
-FILE_VARIABLES = frozenset(n for n, v in VARIABLES.items() if v.type == "String")
-
 
 def user_path(path):
     """An absolute path for a path given by the user (relative to the working directory, `~`
@@ -30,7 +26,3 @@ def data_file(value):
     candidate = user_path(text)
     return candidate if os.path.isfile(candidate) else text
 
-
-def with_absolute_files(values):
-    """A copy of a {variable name: value} mapping with its data-file variables resolved."""
-    return {k: data_file(v) if k in FILE_VARIABLES else v for k, v in values.items()}

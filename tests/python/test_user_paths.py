@@ -36,9 +36,6 @@ def test_data_file_rules(user_dir):
     # not a file here: a name inside the FMU's resources folder, passed through
     assert paths.data_file("lubricants/OS265962.txt") == "lubricants/OS265962.txt"
     assert paths.user_path("out") == str(user_dir / "out")
-    assert paths.FILE_VARIABLES == {"gear_set_file", "lubricant_file", "efficiency_map_file"}
-    values = paths.with_absolute_files({"lubricant_file": "my.txt", "T_s": 100.0})
-    assert values == {"lubricant_file": str(user_dir / "my.txt"), "T_s": 100.0}
 
 
 def test_sweep_points_carry_absolute_files(user_dir, model_description):
