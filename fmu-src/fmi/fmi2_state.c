@@ -8,7 +8,6 @@
 #include "fmi/instance.h"
 
 #define SNAPSHOT_MAGIC 0x48475331u /* "HGS1" */
-#define ANY_STATE (ST_INSTANTIATED | ST_INITIALIZATION | ST_STEP_COMPLETE | ST_TERMINATED | ST_ERROR)
 
 typedef struct {
     hg_fmi_state state;
@@ -25,14 +24,14 @@ fmi2Status fmi2GetFMUstate(fmi2Component comp, fmi2FMUstate *out)
 {
     hg_instance *c = comp;
     hg_snapshot *s;
-    if (!hg_allowed(c, "fmi2GetFMUstate", ANY_STATE)) return fmi2Error;
+    if (!hg_allowed(c, __func__, ST_ANY)) return fmi2Error;
     if (!out) {
-        hg_log(c, fmi2Error, CAT_ERROR, "fmi2GetFMUstate: FMUstate pointer is NULL");
+        hg_error(c, __func__, "FMUstate pointer is NULL");
         return fmi2Error;
     }
     s = *out ? (hg_snapshot *)*out : calloc(1, sizeof *s);
     if (!s || hg_vars_copy(&s->vars, &c->vars)) {
-        hg_log(c, fmi2Error, CAT_ERROR, "fmi2GetFMUstate: out of memory");
+        hg_error(c, __func__, "out of memory");
         if (s && !*out) {
             hg_vars_free_strings(&s->vars);
             free(s);
@@ -51,15 +50,14 @@ fmi2Status fmi2GetFMUstate(fmi2Component comp, fmi2FMUstate *out)
 }
 
 /* A failed restore: the error state, with the results the instance had before. */
-static fmi2Status restore_failed(hg_instance *c, const hg_vars *before, const char *why)
+static fmi2Status restore_failed(hg_instance *c, const char *fn, const hg_vars *before,
+                                 const char *why)
 {
     hg_vars_copy_results(&c->vars, before);
-    hg_log(c, fmi2Error, CAT_ERROR, "fmi2SetFMUstate: %s", why);
-    c->state = ST_ERROR;
-    return fmi2Error;
+    return hg_fail(c, fn, why);
 }
 
-static fmi2Status restore(hg_instance *c, const hg_snapshot *s)
+static fmi2Status restore(hg_instance *c, const char *fn, const hg_snapshot *s)
 {
     char err[HG_ERRLEN];
     const hg_var_info *bad;
@@ -67,7 +65,7 @@ static fmi2Status restore(hg_instance *c, const hg_snapshot *s)
     int same = c->set_up && hg_vars_same_parameters(&c->vars, &s->vars);
     before = c->vars; /* shallow copy: only its results are ever copied back */
     if (hg_vars_copy(&c->vars, &s->vars)) {
-        hg_log(c, fmi2Error, CAT_ERROR, "fmi2SetFMUstate: out of memory");
+        hg_error(c, fn, "out of memory");
         return fmi2Error;
     }
     c->state = s->state;
@@ -78,15 +76,15 @@ static fmi2Status restore(hg_instance *c, const hg_snapshot *s)
     c->set_up = 0;
     if (!s->set_up) return fmi2OK;
     if (!hg_instance_model(c)) {
-        hg_log(c, fmi2Error, CAT_ERROR, "fmi2SetFMUstate: out of memory");
+        hg_error(c, fn, "out of memory");
         return fmi2Error;
     }
     if ((!same && hg_model_setup(c->model, &c->vars, c->start_time, err, sizeof err)) ||
         hg_model_restore(c->model, &c->vars, &s->rt, err, sizeof err))
-        return restore_failed(c, &before, err);
+        return restore_failed(c, fn, &before, err);
     if ((bad = hg_first_nonfinite(c, 1)) != NULL) {
-        snprintf(err, sizeof err, "the state gives %s = %g", bad->name, hg_real_value(c, bad));
-        return restore_failed(c, &before, err);
+        hg_errorf(err, sizeof err, "the state gives %s = %g", bad->name, hg_real_value(c, bad));
+        return restore_failed(c, fn, &before, err);
     }
     c->set_up = 1;
     return fmi2OK;
@@ -95,22 +93,22 @@ static fmi2Status restore(hg_instance *c, const hg_snapshot *s)
 fmi2Status fmi2SetFMUstate(fmi2Component comp, fmi2FMUstate state)
 {
     hg_instance *c = comp;
-    if (!hg_allowed(c, "fmi2SetFMUstate", ANY_STATE)) return fmi2Error;
+    if (!hg_allowed(c, __func__, ST_ANY)) return fmi2Error;
     if (!state) {
-        hg_log(c, fmi2Error, CAT_ERROR, "fmi2SetFMUstate: FMUstate is NULL");
+        hg_error(c, __func__, "FMUstate is NULL");
         return fmi2Error;
     }
     if (!c->resource_dir && ((const hg_snapshot *)state)->set_up) {
-        hg_log(c, fmi2Error, CAT_ERROR, "fmi2SetFMUstate: this instance has no resource location");
+        hg_error(c, __func__, "this instance has no resource location");
         return fmi2Error;
     }
-    return restore(c, state);
+    return restore(c, __func__, state);
 }
 
 fmi2Status fmi2FreeFMUstate(fmi2Component comp, fmi2FMUstate *state)
 {
     hg_instance *c = comp;
-    if (!hg_allowed(c, "fmi2FreeFMUstate", ANY_STATE)) return fmi2Error;
+    if (!hg_allowed(c, __func__, ST_ANY)) return fmi2Error;
     if (state && *state) {
         hg_vars_free_strings(&((hg_snapshot *)*state)->vars);
         free(*state);
@@ -125,7 +123,7 @@ fmi2Status fmi2FreeFMUstate(fmi2Component comp, fmi2FMUstate *state)
 
 static char **string_slot(hg_vars *v, const hg_var_info *info)
 {
-    return (char **)((char *)v + info->offset);
+    return (char **)hg_var_ptr(v, info);
 }
 
 static size_t serialized_size(const hg_snapshot *s)
@@ -141,9 +139,9 @@ static size_t serialized_size(const hg_snapshot *s)
 fmi2Status fmi2SerializedFMUstateSize(fmi2Component comp, fmi2FMUstate state, size_t *size)
 {
     hg_instance *c = comp;
-    if (!hg_allowed(c, "fmi2SerializedFMUstateSize", ANY_STATE)) return fmi2Error;
+    if (!hg_allowed(c, __func__, ST_ANY)) return fmi2Error;
     if (!state || !size) {
-        hg_log(c, fmi2Error, CAT_ERROR, "fmi2SerializedFMUstateSize: NULL argument");
+        hg_error(c, __func__, "NULL argument");
         return fmi2Error;
     }
     *size = serialized_size(state);
@@ -160,9 +158,9 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component comp, fmi2FMUstate state, fmi2Byt
     uint64_t n = sizeof flat;
     char *o = bytes;
     int r;
-    if (!hg_allowed(c, "fmi2SerializeFMUstate", ANY_STATE)) return fmi2Error;
+    if (!hg_allowed(c, __func__, ST_ANY)) return fmi2Error;
     if (!s || !bytes || size < serialized_size(s)) {
-        hg_log(c, fmi2Error, CAT_ERROR, "fmi2SerializeFMUstate: NULL state or buffer, or buffer "
+        hg_error(c, __func__, "NULL state or buffer, or buffer "
                "of %zu bytes is smaller than the %zu needed", size, s ? serialized_size(s) : 0);
         return fmi2Error;
     }
@@ -186,7 +184,7 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component comp, fmi2FMUstate state, fmi2Byt
 /* A deserialized snapshot comes from outside: check what would make it unsafe or meaningless. */
 static int header_valid(const hg_snapshot *s)
 {
-    const hg_inputs *d = &s->input_der;
+    int k;
     if (s->state != ST_INSTANTIATED && s->state != ST_INITIALIZATION &&
         s->state != ST_STEP_COMPLETE && s->state != ST_TERMINATED && s->state != ST_ERROR)
         return 0;
@@ -195,8 +193,8 @@ static int header_valid(const hg_snapshot *s)
     if (s->state == ST_STEP_COMPLETE && !s->set_up) return 0; /* stepping needs a set-up model */
     if (!isfinite(s->start_time) || (s->stop_defined && !(s->stop_time >= s->start_time)))
         return 0;
-    if (!isfinite(d->T_s) || !isfinite(d->T_w) || !isfinite(d->T_bath) || !isfinite(d->w_set))
-        return 0;
+    for (k = 0; k < HG_NUM_INPUTS; k++)
+        if (!isfinite(hg_input_value(&s->input_der, k))) return 0;
     return !s->set_up || (s->rt.mode >= -1 && s->rt.mode <= 1 && isfinite(s->rt.t));
 }
 
@@ -206,7 +204,7 @@ static int vars_valid(const hg_vars *v)
     int r;
     for (r = 0; r < HG_NUM_VARS; r++) {
         const hg_var_info *info = &hg_var_table[r];
-        const char *p = (const char *)v + info->offset;
+        const void *p = hg_var_cptr(v, info);
         int ranged = info->causality == HG_PARAMETER || info->causality == HG_INPUT;
         double x;
         if (info->type == HG_STRING) continue;
@@ -250,7 +248,7 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component comp, const fmi2Byte bytes[], s
     uint32_t magic;
     uint64_t n;
     int r;
-    if (!hg_allowed(c, "fmi2DeSerializeFMUstate", ANY_STATE)) return fmi2Error;
+    if (!hg_allowed(c, __func__, ST_ANY)) return fmi2Error;
     if (!bytes || !state || size < sizeof magic + sizeof n + sizeof *s) goto bad;
     memcpy(&magic, in, sizeof magic), in += sizeof magic;
     memcpy(&n, in, sizeof n), in += sizeof n;
@@ -267,7 +265,7 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component comp, const fmi2Byte bytes[], s
     *state = s;
     return fmi2OK;
 bad:
-    hg_log(c, fmi2Error, CAT_ERROR, "fmi2DeSerializeFMUstate: %zu bytes are not a state "
+    hg_error(c, __func__, "%zu bytes are not a state "
            "serialized by this FMU build", size);
     return fmi2Error;
 }

@@ -27,7 +27,7 @@ static const char *path_part(const char *uri, char *why, size_t whylen)
 {
     const char *p;
     if (!starts_with_nocase(uri, "file:")) {
-        snprintf(why, whylen, "'%.200s' is not a file:// URI", uri);
+        hg_errorf(why, whylen, "'%.200s' is not a file:// URI", uri);
         return NULL;
     }
     p = uri + 5;
@@ -36,13 +36,13 @@ static const char *path_part(const char *uri, char *why, size_t whylen)
         if (starts_with_nocase(p, "localhost/"))
             p += 9;
         else if (*p != '/') {
-            snprintf(why, whylen, *p ? "'%.200s' names a remote host; only local files are "
-                     "supported" : "'%.200s' has no path", uri);
+            hg_errorf(why, whylen, *p ? "'%.200s' names a remote host; only local files are "
+                      "supported" : "'%.200s' has no path", uri);
             return NULL;
         }
     }
     if (*p != '/') {
-        snprintf(why, whylen, "'%.200s' has no absolute path", uri);
+        hg_errorf(why, whylen, "'%.200s' has no absolute path", uri);
         return NULL;
     }
     return p;
@@ -53,19 +53,19 @@ char *hg_uri_to_path(const char *uri, char *why, size_t whylen)
     const char *p;
     char *out, *o;
     if (!uri || !*uri) {
-        snprintf(why, whylen, "the resource location is empty");
+        hg_errorf(why, whylen, "the resource location is empty");
         return NULL;
     }
     if (!(p = path_part(uri, why, whylen))) return NULL;
     if (!(out = malloc(strlen(p) + 1))) {
-        snprintf(why, whylen, "out of memory");
+        hg_errorf(why, whylen, "out of memory");
         return NULL;
     }
     for (o = out; *p; p++) {
         if (*p == '%') {
             int hi = hex_value(p[1]), lo = hi < 0 ? -1 : hex_value(p[2]);
             if (hi < 0 || lo < 0 || (hi == 0 && lo == 0)) {
-                snprintf(why, whylen, "'%.200s' has a bad percent escape", uri);
+                hg_errorf(why, whylen, "'%.200s' has a bad percent escape", uri);
                 free(out);
                 return NULL;
             }

@@ -4,8 +4,8 @@
 
 #include "fmi/instance.h"
 
-#define FIELD(v, info, type) ((type *)((char *)(v) + (info)->offset))
-#define CFIELD(v, info, type) ((const type *)((const char *)(v) + (info)->offset))
+#define FIELD(v, info, type) ((type *)hg_var_ptr(v, info))
+#define CFIELD(v, info, type) ((const type *)hg_var_cptr(v, info))
 
 static char *dup_string(const char *s)
 {

@@ -15,8 +15,8 @@ static int read_axis(const hg_datafile *f, const char *path, const char *key, do
     if (hg_datafile_numbers(f, key, 1, HG_MAP_MAX_AXIS, v, &count, err, errlen)) return -1;
     for (i = 0; i < count; i++) {
         if (v[i] < lo || (i > 0 && !(v[i] > v[i - 1]))) {
-            snprintf(err, errlen, "%s: key '%s': values must be ascending and >= %g (value %zu is %g)",
-                     path, key, lo, i + 1, v[i]);
+            hg_errorf(err, errlen, "%s: key '%s': values must be ascending and >= %g (value %zu is %g)",
+                      path, key, lo, i + 1, v[i]);
             return -1;
         }
     }
@@ -38,8 +38,8 @@ static int read_table(const hg_datafile *f, const char *path, hg_effmap *map, ch
             if (hg_datafile_numbers(f, key, per_K, per_K, eta, NULL, err, errlen)) return -1;
             for (i = 0; i < per_K; i++) {
                 if (!(eta[i] > 0.0 && eta[i] <= 1.0)) {
-                    snprintf(err, errlen, "%s: key '%s': efficiency %g (value %zu) is not in (0, 1]",
-                             path, key, eta[i], i + 1);
+                    hg_errorf(err, errlen, "%s: key '%s': efficiency %g (value %zu) is not in (0, 1]",
+                              path, key, eta[i], i + 1);
                     return -1;
                 }
             }
@@ -107,7 +107,7 @@ int hg_effmap_load(const char *path, hg_effmap *map, char *err, size_t errlen)
     map->M_T = malloc((size_t)map->n_T * map->n_T * sizeof(double));
     map->M_K = malloc((size_t)map->n_K * map->n_K * sizeof(double));
     if (!map->eta || !map->M_w || !map->M_T || !map->M_K) {
-        snprintf(err, errlen, "%s: out of memory", path);
+        hg_errorf(err, errlen, "%s: out of memory", path);
         goto done;
     }
     if (read_table(f, path, map, err, errlen) || hg_datafile_check_all_used(f, err, errlen))

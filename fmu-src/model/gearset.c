@@ -25,8 +25,8 @@ static int read_series(const hg_datafile *f, const char *name, hg_series *y, cha
     snprintf(key, sizeof key, "%s.cos", name);
     if (hg_datafile_numbers(f, key, 0, HG_MAX_HARMONICS, y->c, &nc, err, errlen)) return -1;
     if (ns != nc) {
-        snprintf(err, errlen, "series '%s': %d sine but %zu cosine coefficients", name, n_sin,
-                 nc);
+        hg_errorf(err, errlen, "series '%s': %d sine but %zu cosine coefficients", name, n_sin,
+                  nc);
         return -1;
     }
     y->n = (int)ns;
@@ -38,7 +38,7 @@ static int read_teeth(const hg_datafile *f, const char *key, int *N, char *err, 
     double v;
     if (hg_datafile_number(f, key, 3, 200, &v, err, errlen)) return -1;
     if (v != floor(v)) {
-        snprintf(err, errlen, "key '%s' = %g is not a whole number of teeth", key, v);
+        hg_errorf(err, errlen, "key '%s' = %g is not a whole number of teeth", key, v);
         return -1;
     }
     *N = (int)v;
@@ -49,8 +49,8 @@ static int check_positive(const char *path, const char *what, double v, double t
                           size_t errlen)
 {
     if (v > 0.0 && isfinite(v)) return 0;
-    snprintf(err, errlen, "%s: series %s evaluates to %g at mesh angle %.3f rad: must be > 0",
-             path, what, v, theta);
+    hg_errorf(err, errlen, "%s: series %s evaluates to %g at mesh angle %.3f rad: must be > 0",
+              path, what, v, theta);
     return -1;
 }
 
@@ -76,10 +76,10 @@ static int check_gearset(const char *path, const hg_gearset *g, char *err, size_
                 return -1;
         }
         if (fabs(raw_sum - 1.0) > 0.05) {
-            snprintf(err, errlen,
-                     "%s: the load shares of the three pairs sum to %.4f at mesh angle %.3f rad "
-                     "(must be 1 within 0.05)",
-                     path, raw_sum, theta);
+            hg_errorf(err, errlen,
+                      "%s: the load shares of the three pairs sum to %.4f at mesh angle %.3f rad "
+                      "(must be 1 within 0.05)",
+                      path, raw_sum, theta);
             return -1;
         }
     }

@@ -14,7 +14,7 @@ hg_solver *hg_solver_new(int n, int n_roots, hg_rhs_fn f, hg_root_fn g, void *us
 {
     hg_solver *s = calloc(1, sizeof *s);
     if (!s) {
-        snprintf(err, errlen, "out of memory creating the solver");
+        hg_errorf(err, errlen, "out of memory creating the solver");
         return NULL;
     }
     s->ops = opt->method == HG_METHOD_NEWMARK ? &hg_newmark_ops : &hg_cvode_ops;

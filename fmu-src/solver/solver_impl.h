@@ -2,6 +2,7 @@
 #ifndef HG_SOLVER_IMPL_H
 #define HG_SOLVER_IMPL_H
 
+#include "io/errmsg.h"
 #include "solver/solver.h"
 
 typedef struct {

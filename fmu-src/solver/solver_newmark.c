@@ -56,7 +56,7 @@ static void *create(int n, int n_roots, hg_rhs_fn f, hg_root_fn g, void *user,
         !(s->y = malloc((size_t)(7 * n + 2 * nr) * sizeof(double))) ||
         !(s->A = malloc((size_t)n * (size_t)n * sizeof(double))) ||
         !(s->piv = malloc((size_t)n * sizeof(int)))) {
-        snprintf(err, errlen, "out of memory creating the Newmark solver");
+        hg_errorf(err, errlen, "out of memory creating the Newmark solver");
         destroy(s);
         return NULL;
     }
@@ -93,7 +93,7 @@ static int set_max_step(void *impl, double h, char *err, size_t errlen)
 {
     newmark *s = impl;
     if (!(h > 0.0) || !isfinite(h)) {
-        snprintf(err, errlen, "Newmark: the fixed step must be positive and finite, got %g", h);
+        hg_errorf(err, errlen, "Newmark: the fixed step must be positive and finite, got %g", h);
         return -1;
     }
     s->h = h;
@@ -283,10 +283,10 @@ static hg_advance_result advance(void *impl, double t_stop, double *t, double *y
     memcpy(y, s->y, (size_t)s->n * sizeof(double));
     return HG_ADVANCE_REACHED;
 failed:
-    snprintf(err, errlen, "Newmark: %s at t = %.9g s (step %g s); use a shorter step "
-             "(steps_per_mesh_cycle, max_step) or a CVODE solver",
-             taken > s->max_steps ? "too many steps" : "Newton iteration failed to converge",
-             s->t, s->h);
+    hg_errorf(err, errlen, "Newmark: %s at t = %.9g s (step %g s); use a shorter step "
+              "(steps_per_mesh_cycle, max_step) or a CVODE solver",
+              taken > s->max_steps ? "too many steps" : "Newton iteration failed to converge",
+              s->t, s->h);
     return HG_ADVANCE_FAILED;
 }
 

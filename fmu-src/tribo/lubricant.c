@@ -42,17 +42,17 @@ static int cross_check(const hg_lubricant *l, const char *where, char *err, size
     int i;
     for (i = 1; i < 3; i++) {
         if (!(t[i] >= t[i - 1] + 1.0)) {
-            snprintf(err, errlen,
-                     "%s: alpha_star_T%d = %g K must exceed alpha_star_T%d = %g K by at least 1 K",
-                     where, i + 1, t[i], i, t[i - 1]);
+            hg_errorf(err, errlen,
+                      "%s: alpha_star_T%d = %g K must exceed alpha_star_T%d = %g K by at least 1 K",
+                      where, i + 1, t[i], i, t[i - 1]);
             return -1;
         }
     }
     if (!(l->vogel_c <= t[0] - 40.0)) {
-        snprintf(err, errlen,
-                 "%s: vogel_c = %g K must lie at least 40 K below alpha_star_T1 = %g K (the "
-                 "Vogel law has its pole at T = c)",
-                 where, l->vogel_c, t[0]);
+        hg_errorf(err, errlen,
+                  "%s: vogel_c = %g K must lie at least 40 K below alpha_star_T1 = %g K (the "
+                  "Vogel law has its pole at T = c)",
+                  where, l->vogel_c, t[0]);
         return -1;
     }
     /* alpha*(T) quadratic of docs/physics.md §4.2: its slope is linear in T, so non-positive slopes at
@@ -63,18 +63,18 @@ static int cross_check(const hg_lubricant *l, const char *where, char *err, size
     s0 = d1 + d2 * (t[0] - t[1]);
     s2 = d1 + d2 * ((t[2] - t[0]) + (t[2] - t[1]));
     if (s0 > 0.0 || s2 > 0.0) {
-        snprintf(err, errlen,
-                 "%s: alpha_star_1..3 = %g, %g, %g 1/Pa: the quadratic through them must not "
-                 "increase with temperature on [alpha_star_T1, alpha_star_T3] (slope %g 1/(Pa K) "
-                 "at T1, %g at T3)",
-                 where, y[0], y[1], y[2], s0, s2);
+        hg_errorf(err, errlen,
+                  "%s: alpha_star_1..3 = %g, %g, %g 1/Pa: the quadratic through them must not "
+                  "increase with temperature on [alpha_star_T1, alpha_star_T3] (slope %g 1/(Pa K) "
+                  "at T1, %g at T3)",
+                  where, y[0], y[1], y[2], s0, s2);
         return -1;
     }
     if (l->hn_alpha * l->hn_beta > 1.0 + 1e-12) {
-        snprintf(err, errlen,
-                 "%s: hn_alpha * hn_beta = %g exceeds 1 (the shear stress would fall with shear "
-                 "rate)",
-                 where, l->hn_alpha * l->hn_beta);
+        hg_errorf(err, errlen,
+                  "%s: hn_alpha * hn_beta = %g exceeds 1 (the shear stress would fall with shear "
+                  "rate)",
+                  where, l->hn_alpha * l->hn_beta);
         return -1;
     }
     return 0;
@@ -91,7 +91,7 @@ int hg_lubricant_load(const char *path, hg_lubricant *out, char *err, size_t err
     if (!f) return -1;
     if (hg_datafile_text(f, "name", l.name, sizeof l.name, err, errlen)) goto done;
     if (l.name[0] == '\0') {
-        snprintf(err, errlen, "%s: key 'name' needs a text value", path);
+        hg_errorf(err, errlen, "%s: key 'name' needs a text value", path);
         goto done;
     }
     if (hg_datafile_number(f, "vogel_a", A_LO, A_HI, &l.vogel_a, err, errlen) ||
