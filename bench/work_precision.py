@@ -43,7 +43,7 @@ QUICK_SETTINGS = ([W.Setting("bdf", r) for r in (1e-3, 1e-5, 1e-7)]
 METRICS = {  # key: (column of the error, title, unit factor, unit, floor for the log plots)
     "eta_E": ("err_eta_E", "energy efficiency over the window |d eta| [%-points]", 100.0,
               "%-points", 1e-8),
-    "dte_pp": ("err_dte_pp", "DTE peak to peak |d| [um]", 1e6, "um", 1e-5),
+    "dte_pp": ("err_dte_pp", "DTE peak to peak |d| [µm]", 1e6, "µm", 1e-5),
     "loss": ("err_loss", "contact-loss fraction |d| [-]", 1.0, "", 1e-5),
     "w_mean": ("err_w_rel", "mean input speed, relative |d| [-]", 1.0, "", 1e-12),
 }
@@ -218,7 +218,7 @@ def run_all(args):
                     log(f"[{key}] {lv:10s} {st.label:22s} FAILED: {r['message'][:200]}")
                 else:
                     log(f"[{key}] {lv:10s} {st.label:22s} RTF {r['rtf']:8.1f}  "
-                        f"d_eta {100 * r['err_eta_E']:.2e} %  d_dte {1e6 * r['err_dte_pp']:.2e} um  "
+                        f"d_eta {100 * r['err_eta_E']:.2e} %  d_dte {1e6 * r['err_dte_pp']:.2e} µm  "
                         f"d_loss {r['err_loss']:.3f}  d_w {r['err_w_rel']:.1e}")
         log(f"[{key}] done in {time.time() - t0:.0f} s")
     for key, ref in refs.items():
@@ -363,13 +363,13 @@ USE_CASES = [
     ("Vehicle energy, with cold starts", ["design", "off_resonance", "reversal", "cold"],
      {"err_eta_E": 1e-3, "err_w_rel": 1e-3}, "the same, also at -20 degC", "cheapest", None),
     ("NVH / axle whine (DTE)", ["design", "off_resonance", "resonance"],
-     {"err_dte_pp": 0.1e-6}, "DTE peak to peak within 0.1 um", "cheapest", None),
+     {"err_dte_pp": 0.1e-6}, "DTE peak to peak within 0.1 µm", "cheapest", None),
     ("Efficiency maps", ["design", "off_resonance", "resonance", "cold"],
      {"err_eta_E": 1e-4, "err_eta_cycle": 1e-4}, "eta over the window and eta_cycle within "
      "0.01 %-point", "cheapest", None),
     ("Tooth separation / rattle", ["resonance", "reversal"],
      {"err_loss": 0.01, "err_dte_pp": 1e-6}, "contact-loss fraction within 0.01, DTE p-p within "
-     "1 um", "cheapest", None),
+     "1 µm", "cheapest", None),
     ("Hardware-in-the-loop / real time", ["design", "off_resonance", "resonance", "reversal",
                                           "cold"],
      {"cpu_per_s": 0.1}, "fixed step (cost per step bounded), real-time factor >= 10 in every "
@@ -387,7 +387,7 @@ def setting_name(lv, r):
 
 def recommendations(rows):
     lines = ["| use | scenes | requirement | setting chosen | worst real-time factor | "
-             "worst errors (eta %-pt / DTE p-p um / contact loss / speed) |",
+             "worst errors (eta %-pt / DTE p-p µm / contact loss / speed) |",
              "|---|---|---|---|---|---|"]
     for title, keys, crit, text, choice, solvers in USE_CASES:
         found = candidates(rows, keys, crit, solvers)
@@ -581,9 +581,9 @@ def write_markdown(rows, extra, path, plots):
          "would shorten its step), so its DTE p-p includes the peaks it steps over.",
          f"* Map level: {meta.get('map')}.",
          "", "## Reference and its confirmation", "",
-         "| scene | eta_E | eta_cycle | DTE p-p [um] | contact loss | mean w_s [rad/s] | impacts | "
+         "| scene | eta_E | eta_cycle | DTE p-p [µm] | contact loss | mean w_s [rad/s] | impacts | "
          "RTF of the reference | BDF vs Adams: d eta_E / d eta_cycle [%-pt] | d DTE p-p / max abs "
-         "d DTE [um] | d loss | d speed rel |",
+         "d DTE [µm] | d loss | d speed rel |",
          "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for k, ref in extra["references"].items():
         a = agree[k]
@@ -593,7 +593,7 @@ def write_markdown(rows, extra, path, plots):
                  f"{1e6 * a['dte_pp']:.1e} / {1e6 * a['dte_max_abs_diff']:.1e} | {a['loss']:.1e} | "
                  f"{a['w_rel']:.1e} |")
     L += ["", "## Model error of each level (its own BDF rtol 1e-10 solution vs the full reference)",
-          "", "| scene | level | d eta_E [%-pt] | d eta_cycle [%-pt] | d DTE p-p [um] | d loss | "
+          "", "| scene | level | d eta_E [%-pt] | d eta_cycle [%-pt] | d DTE p-p [µm] | d loss | "
           "d speed rel |", "|---|---|---|---|---|---|---|"]
     for kl, r in extra["model_error"].items():
         k, lv = kl.split("|")
@@ -635,7 +635,7 @@ def write_markdown(rows, extra, path, plots):
     L += ["", "### Variable step vs the paper's fixed-step Newmark at equal accuracy", "",
           "For each Newmark setting of the full model: the cheapest CVODE setting at least as "
           "accurate in both eta_E and DTE p-p, of the full model and of any level.", "",
-          "| scene | Newmark steps/cycle | its RTF | its d eta [%-pt] / d DTE [um] | best full-model "
+          "| scene | Newmark steps/cycle | its RTF | its d eta [%-pt] / d DTE [µm] | best full-model "
           "CVODE | speed-up | best of any level | speed-up |", "|---|---|---|---|---|---|---|---|"]
     for k in extra["references"]:
         for e in newmark_ratios(rows, k):
@@ -675,7 +675,7 @@ def write_markdown(rows, extra, path, plots):
     L += ["## Table", "", f"All runs: [`{pathlib.Path(extra['csv']).name}`]"
           f"({pathlib.Path(extra['csv']).name}). Errors against the reference; failed runs carry "
           "the FMU's message.", "",
-          "| scene | level | setting | RTF | d eta_E [%-pt] | d eta_cycle [%-pt] | d DTE p-p [um] | "
+          "| scene | level | setting | RTF | d eta_E [%-pt] | d eta_cycle [%-pt] | d DTE p-p [µm] | "
           "d loss | d speed rel | energy residual | steps | impacts |",
           "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:

@@ -40,7 +40,7 @@ FINE_PER_CYCLE = 64  # samples per mesh cycle of the fine runs (CVODE)
 LEVELS = dict(_LEVELS)  # a copy: the benchmark adds diagnostic levels
 LEVEL_TITLES = {
     "full": "varying + ehl_thermal, exact backlash (full)",
-    "smoothed": "varying + ehl_thermal, smoothed backlash (2 um)",
+    "smoothed": "varying + ehl_thermal, smoothed backlash (2 µm)",
     "isothermal": "varying + ehl_isothermal, exact backlash",
     "mean": "mean mesh + ehl_thermal",
     "rigid": "rigid mesh + ehl_thermal",
