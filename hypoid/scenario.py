@@ -17,6 +17,7 @@ import json
 import math
 import pathlib
 import re
+import sys
 import time
 
 import numpy as np
@@ -246,11 +247,15 @@ def main(argv):
     with Instance(cliargs.fmu_path(args.fmu), name="run") as inst:
         r, h, cpu = simulate(inst, params, args.stop_time, args.output_interval)
         b, n_p = half_backlash(inst), inst.pinion_teeth()
+        warnings = [text for _, category, text in inst.messages if category == "logStatusWarning"]
+    for text in warnings:  # ignored or implausible values: the run went on, the user is told
+        print(f"hypoid run: FMU warning: {text}", file=sys.stderr)
     name = run_name(params, args.name)
     folder = fresh_folder(args.out, name, args.overwrite)
     cycle = mesh_cycles(r, n_p)
     cycles = cycle_table(r, cycle)
     summary = summarise(r, cpu, args.stop_time, params, b)
+    summary["fmu_warnings"] = warnings
     write_tables(r, cycles, folder)
     (folder / "summary.json").write_text(json.dumps(summary, indent=2) + "\n")
     title = f"hypoid run {name}" + (f" ({folder.name})" if folder.name != name else "")

@@ -2,6 +2,7 @@
 are ignored or implausible, units in the range messages, and the elastic mesh deflection as an
 output beside the DTE (which keeps the paper's definition, half backlash included)."""
 
+import json
 import math
 
 import numpy as np
@@ -100,3 +101,16 @@ def test_elastic_deflection_is_zero_while_apart(harness):
 ])
 def test_elastic_deflection_of_the_simpler_meshes(harness, mesh_model, check):
     check(run(harness, 0.01, 1e-3, mesh_model=mesh_model))
+
+
+def test_hypoid_run_shows_the_warnings(tmp_path, fmu_path, capsys):
+    """`hypoid run` passes the FMU's set-up warnings on to the user and into summary.json."""
+    from hypoid import scenario
+
+    argv = ["--fmu", str(fmu_path), "--out", str(tmp_path), "--stop-time", "0.005",
+            "--set", "w_set=1500", "w_p0=150"]
+    assert scenario.main(argv) == 0
+    err = capsys.readouterr().err
+    assert "hypoid run: FMU warning: w_set = 1500 rad/s (14324 rpm)" in err
+    (summary,) = tmp_path.glob("*/summary.json")
+    assert "w_set = 1500 rad/s" in " ".join(json.loads(summary.read_text())["fmu_warnings"])
