@@ -12,7 +12,7 @@
  * Returns b_c when u = v = 0. [m] */
 double hg_coleman_length(double a_c, double b_c, double u, double v);
 
-/* Moving-heat-source resistance R_f,i = 1.06/(A k_s) sqrt(chi_s l_i/U_tot,i) [K/W] (eq. 18 with D2);
+/* Moving-heat-source resistance R_f,i = 1.06/(A k_s) sqrt(chi_s l_i/U_tot,i) [K/W] (eq. 18; D2 of docs/physics.md §0);
  * U_tot is floored at HG_SPEED_FLOOR. */
 double hg_moving_source_resistance(double A, double k_s, double chi_s, double l, double U_tot);
 

@@ -107,6 +107,21 @@ def test_decision_references_resolve():
     assert seen > 5 and not bad, bad
 
 
+def test_decision_ids_say_where_they_are_defined():
+    """A decision id (D1-D11) is always cited next to docs/physics.md (same line or the two
+    lines around it), so a reader finds the table of §0."""
+    bad = []
+    for path, text in tracked_text_files():
+        if path in (THIS, "docs/physics.md"):
+            continue
+        lines = text.split("\n")
+        for i, line in enumerate(lines):
+            if re.search(r"\bD(?:1[01]|[1-9])\b", line) and \
+                    "physics.md" not in "\n".join(lines[max(0, i - 2):i + 3]):
+                bad.append(f"{path}:{i + 1}: {line.strip()[:80]}")
+    assert not bad, "decision ids without docs/physics.md nearby:\n" + "\n".join(bad)
+
+
 def optional_test_tool(path, text):
     """Test tooling (tests/, scripts/) that only looks for the team's tools/ and skips with a
     message when they are absent (e.g. scripts/fmucheck.sh)."""
