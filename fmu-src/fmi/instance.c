@@ -86,8 +86,7 @@ static const char *state_name(hg_fmi_state s)
     case ST_INITIALIZATION: return "initialization mode";
     case ST_STEP_COMPLETE: return "step complete";
     case ST_TERMINATED: return "terminated";
-    case ST_ERROR: return "error";
-    default: return "fatal";
+    default: return "error";
     }
 }
 

@@ -18,8 +18,7 @@ typedef enum {
     ST_INITIALIZATION = 2,
     ST_STEP_COMPLETE = 4,
     ST_TERMINATED = 8,
-    ST_ERROR = 16,
-    ST_FATAL = 32
+    ST_ERROR = 16
 } hg_fmi_state;
 
 /* The sets of states the functions are allowed in. */

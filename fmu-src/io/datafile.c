@@ -337,13 +337,6 @@ int hg_datafile_number(const hg_datafile *f, const char *key, double lo, double 
     return 0;
 }
 
-int hg_datafile_number_opt(const hg_datafile *f, const char *key, double lo, double hi,
-                           double *val, char *err, size_t errlen)
-{
-    if (!find(f, key)) return 0;
-    return hg_datafile_number(f, key, lo, hi, val, err, errlen);
-}
-
 int hg_datafile_text(const hg_datafile *f, const char *key, char *buf, size_t buflen, char *err,
                      size_t errlen)
 {

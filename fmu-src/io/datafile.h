@@ -37,10 +37,6 @@ int hg_datafile_numbers(const hg_datafile *f, const char *key, size_t n_min, siz
 int hg_datafile_number(const hg_datafile *f, const char *key, double lo, double hi, double *val,
                        char *err, size_t errlen);
 
-/* Same as hg_datafile_number when the key is present; leaves *val unchanged when it is absent. */
-int hg_datafile_number_opt(const hg_datafile *f, const char *key, double lo, double hi,
-                           double *val, char *err, size_t errlen);
-
 /* The rest of the line after `key`, whitespace-trimmed, copied into buf (truncated to buflen). */
 int hg_datafile_text(const hg_datafile *f, const char *key, char *buf, size_t buflen, char *err,
                      size_t errlen);
