@@ -1,0 +1,167 @@
+/* The model object through its own interface (model/hypoid.h), without the FMI layer: set-up
+ * from the variables' start values (gear set 1, the paper's thermal mixed-EHL model), the
+ * calculated parameters and the initial state against hand values, the energy audit after
+ * stepping (the work in minus out minus losses is the change of the stored energy), snapshots
+ * (a restored run continues bit for bit as the original), and the errors of bad use. Runs from
+ * the source directory (ctest's working directory) for resources/. */
+#include "model/hypoid.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "check.h"
+
+typedef struct {
+    int messages;
+    char last[HG_ERRLEN];
+    int setup_logged;
+} log_record;
+
+static void record(void *ctx, const char *category, const char *message)
+{
+    log_record *r = ctx;
+    (void)category;
+    r->messages++;
+    snprintf(r->last, sizeof r->last, "%s", message);
+    if (strncmp(message, "set-up:", 7) == 0) r->setup_logged = 1;
+}
+
+/* Every variable at its start value; strings point at the table's (the model only reads them). */
+static void start_values(hg_vars *v)
+{
+    int r;
+    memset(v, 0, sizeof *v);
+    for (r = 0; r < HG_NUM_VARS; r++) {
+        const hg_var_info *info = &hg_var_table[r];
+        void *p = hg_var_ptr(v, info);
+        if (info->type == HG_REAL)
+            *(double *)p = info->start;
+        else if (info->type == HG_STRING)
+            *(const char **)p = info->start_string;
+        else
+            *(int *)p = (int)info->start;
+    }
+}
+
+/* 1 when every Real output of a and b is the same to the bit. */
+static int same_real_outputs(const hg_vars *a, const hg_vars *b)
+{
+    int r;
+    for (r = 0; r < HG_NUM_VARS; r++) {
+        const hg_var_info *info = &hg_var_table[r];
+        if (info->causality != HG_OUTPUT || info->type != HG_REAL) continue;
+        if (memcmp(hg_var_cptr(a, info), hg_var_cptr(b, info), sizeof(double)) != 0) {
+            fprintf(stderr, "output %s differs\n", info->name);
+            return 0;
+        }
+    }
+    return 1;
+}
+
+static double audit(const hg_vars *v)
+{
+    return v->E_in - v->E_out - v->E_friction - v->E_damping + v->E_excitation;
+}
+
+static void test_setup_and_step(void)
+{
+    log_record log = {0, "", 0};
+    hg_model *m = hg_model_new("resources", record, &log);
+    hg_vars v, after_a, after_b;
+    hg_runtime snap;
+    hg_inputs du;
+    char err[HG_ERRLEN] = "";
+    double E0;
+    int k;
+    CHECK(m != NULL);
+    if (!m) return;
+    start_values(&v);
+    v.mesh_model = HG_MESH_MODEL_MEAN; /* no backlash: the equilibrium is one formula */
+    CHECK(hg_model_setup(m, &v, 0.0, err, sizeof err) == 0);
+    if (err[0]) fprintf(stderr, "set-up: %s\n", err);
+    CHECK(log.setup_logged);
+    /* calculated parameters: i = N_g / N_p, modes ordered and positive */
+    CHECK(v.N_p > 0 && v.N_g > v.N_p);
+    CHECK_CLOSE(v.ratio, (double)v.N_g / v.N_p, 1e-15, 0.0);
+    CHECK(v.f_2 > 0.0 && v.f_3 > v.f_2 && v.f_4 > v.f_3);
+    CHECK(v.c_t1 >= 0.0 && v.c_m >= 0.0 && v.c_t2 >= 0.0);
+    /* the static equilibrium at w_p0 (docs/physics.md §8.6) */
+    CHECK(hg_model_time(m) == 0.0);
+    CHECK(v.w_p == v.w_p0 && v.w_s == v.w_p0);
+    CHECK_CLOSE(v.w_g, v.w_p0 / v.ratio, 1e-15, 0.0);
+    CHECK_CLOSE(v.DTE, v.T_s / (v.R_p0 * v.k_m0), 1e-12, 0.0);
+    CHECK_CLOSE(v.W_t, v.T_s / v.R_p0, 1e-9, 0.0);
+    CHECK(v.E_in == 0.0 && v.E_out == 0.0 && v.eta_cycle == 1.0);
+    E0 = v.E_stored;
+
+    memset(&du, 0, sizeof du);
+    for (k = 0; k < 10; k++) CHECK(hg_model_step(m, &v, &du, 1e-3, err, sizeof err) == 0);
+    CHECK_CLOSE(hg_model_time(m), 1e-2, 1e-12, 0.0);
+    CHECK(v.E_in > 0.0 && v.E_friction > 0.0 && v.eta > 0.9 && v.eta < 1.0);
+    /* energy audit: what went in and did not come out or get lost is stored */
+    CHECK_CLOSE(audit(&v), v.E_stored - E0, 0.0, 1e-6 * v.E_in);
+
+    hg_model_save(m, &snap);
+    CHECK(hg_model_step(m, &v, &du, 5e-3, err, sizeof err) == 0);
+    after_a = v;
+    CHECK(hg_model_restore(m, &v, &snap, err, sizeof err) == 0);
+    CHECK(hg_model_time(m) == snap.t);
+    CHECK(hg_model_step(m, &v, &du, 5e-3, err, sizeof err) == 0);
+    after_b = v;
+    CHECK(same_real_outputs(&after_a, &after_b));
+    hg_model_free(m);
+}
+
+/* Inputs held over a step are interpolated with their derivatives: a torque ramp from 100 to
+ * 150 N m over the step ends the step at 150 N m. */
+static void test_input_ramp(void)
+{
+    hg_model *m = hg_model_new("resources", NULL, NULL);
+    hg_vars v;
+    hg_inputs du;
+    hg_runtime snap;
+    char err[HG_ERRLEN] = "";
+    if (!m) return;
+    start_values(&v);
+    v.mesh_model = HG_MESH_MODEL_MEAN;
+    v.friction_model = HG_FRICTION_MODEL_COULOMB;
+    CHECK(hg_model_setup(m, &v, 0.0, err, sizeof err) == 0);
+    memset(&du, 0, sizeof du);
+    du.T_s = 50.0 / 2e-3; /* N m/s */
+    CHECK(hg_model_step(m, &v, &du, 2e-3, err, sizeof err) == 0);
+    hg_model_save(m, &snap);
+    CHECK_CLOSE(snap.u_end.T_s, v.T_s + 50.0, 1e-12, 0.0);
+    CHECK(snap.u_end.T_w == v.T_w);
+    hg_model_free(m);
+}
+
+static void test_errors(void)
+{
+    log_record log = {0, "", 0};
+    hg_model *m = hg_model_new("resources", record, &log);
+    hg_vars v;
+    hg_runtime snap;
+    char err[HG_ERRLEN] = "";
+    if (!m) return;
+    start_values(&v);
+    memset(&snap, 0, sizeof snap);
+    CHECK(hg_model_restore(m, &v, &snap, err, sizeof err) != 0);
+    CHECK(strstr(err, "not set up") != NULL);
+    v.gear_set_file = "no/such/gearset.txt";
+    CHECK(hg_model_setup(m, &v, 0.0, err, sizeof err) != 0);
+    CHECK(strstr(err, "gear_set_file = 'no/such/gearset.txt'") != NULL);
+    start_values(&v);
+    v.friction_model = HG_FRICTION_MODEL_MAP; /* needs the rigid mesh */
+    CHECK(hg_model_setup(m, &v, 0.0, err, sizeof err) != 0);
+    CHECK(strstr(err, "mesh_model = rigid") != NULL);
+    hg_model_free(m);
+    hg_model_free(NULL);
+}
+
+int main(void)
+{
+    test_setup_and_step();
+    test_input_ramp();
+    test_errors();
+    CHECK_DONE();
+}
