@@ -1,4 +1,4 @@
-/* Efficiency maps: reading and trilinear interpolation (see effmap.h). */
+/* Efficiency maps: reading and C2 spline interpolation (see effmap.h). */
 #include "model/effmap.h"
 
 #include <math.h>
