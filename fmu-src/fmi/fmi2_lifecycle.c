@@ -86,7 +86,7 @@ static int check_instantiate_args(hg_instance *c, const char *fn, fmi2String nam
         hg_error(c, fn, "this FMU supports co-simulation only");
         return -1;
     }
-    if (!guid || strcmp(guid, HG_GUID) != 0) {
+    if (!guid || (strcmp(guid, HG_GUID) != 0 && strcmp(guid, HG_GUID_INTENUM) != 0)) {
         hg_error(c, fn, "GUID '%s' does not match this binary's '%s'", guid ? guid : "(null)",
                  HG_GUID);
         return -1;

@@ -46,24 +46,22 @@ def need(module, why_not=None):
 
 @pytest.fixture(scope="module")
 def fmus():
-    for path in (cd.GEAR_FMU, cd.VEHICLE_FMU):
+    for path in (cd.GEAR_FMU, cd.GEAR_INTENUM_FMU, cd.VEHICLE_FMU):
         if not path.exists():
             pytest.fail(f"{path} is missing: build it first (scripts/setup.sh)")
 
 
 @pytest.fixture(scope="module")
-def run(fmus, tmp_path_factory):
-    """run(host, h): the scene with host 'libcosim' or 'fmpy' (Jacobi) at step h, cached."""
-    gear_view = tmp_path_factory.mktemp("libcosim") / "HypoidGearPair_libcosim.fmu"
+def run(fmus):
+    """run(host, h): the scene with host 'libcosim' (the build's integer-coded gear FMU, as
+    shipped) or 'fmpy' (Jacobi, the main gear FMU) at step h, cached."""
     scene = cd.Scene()
 
     @functools.cache
     def go(host, h):
         if host == "libcosim":
             need("libcosimpy", cd.libcosim_available)
-            if not gear_view.exists():
-                cd.libcosim_view(cd.GEAR_FMU, gear_view)
-            return cd.run_libcosim(scene, h, gear_view)
+            return cd.run_libcosim(scene, h)
         return cd.run_fmpy(scene, h, "jacobi")
 
     return go
@@ -161,17 +159,43 @@ def test_vehicle_state_machine_and_bad_values(fmus, tmp_path):
 # ------------------------------------------------------------------ the coupled system
 
 
-def test_libcosim_view_changes_only_the_enumerations(fmus, tmp_path):
-    view = cd.libcosim_view(cd.GEAR_FMU, tmp_path / "view.fmu")
-    assert validate_fmu(str(view)) == []
-    a, b = read_model_description(str(cd.GEAR_FMU)), read_model_description(str(view))
-    assert a.guid == b.guid
-    assert [(v.name, v.valueReference, v.causality) for v in a.modelVariables] == \
-        [(v.name, v.valueReference, v.causality) for v in b.modelVariables]
-    changed = {v.name: v.type for v in b.modelVariables
-               if v.type != {x.name: x.type for x in a.modelVariables}[v.name]}
-    assert changed and set(changed.values()) == {"Integer"}
-    assert "load_mode" in changed
+def test_intenum_fmu_differs_only_in_the_enumerations(fmus, tmp_path):
+    assert validate_fmu(str(cd.GEAR_INTENUM_FMU)) == []
+    a, b = read_model_description(str(cd.GEAR_FMU)), read_model_description(str(cd.GEAR_INTENUM_FMU))
+    assert a.guid != b.guid  # FMI ties a GUID to one modelDescription
+    assert [(v.name, v.valueReference, v.causality, v.start) for v in a.modelVariables] == \
+        [(v.name, v.valueReference, v.causality, v.start) for v in b.modelVariables]
+    items = {t.name: len(t.items) for t in a.typeDefinitions}
+    enums = {v.name: items[v.declaredType.name] for v in a.modelVariables if v.type == "Enumeration"}
+    assert "load_mode" in enums and len(enums) >= 8
+    for v in b.modelVariables:
+        if v.name in enums:
+            assert (v.type, int(v.min), int(v.max)) == ("Integer", 1, enums[v.name]), v.name
+        else:
+            assert v.type == {x.name: x.type for x in a.modelVariables}[v.name], v.name
+    # the one binary accepts both GUIDs and nothing else
+    for guid, ok in ((a.guid, True), (b.guid, True), (a.guid[:-2] + "0}", False)):
+        fmu = FMU2Slave(guid=guid, modelIdentifier="HypoidGearPair", instanceName="g",
+                        unzipDirectory=extract(str(cd.GEAR_INTENUM_FMU), str(tmp_path / guid)))
+        if ok:
+            fmu.instantiate()
+            fmu.freeInstance()
+        else:
+            with pytest.raises(Exception):
+                fmu.instantiate()
+
+
+def test_libcosim_loads_every_variable_of_the_intenum_fmu(fmus):
+    need("libcosimpy", cd.libcosim_available)
+    from libcosimpy.CosimEnums import CosimVariableType
+    names = {v.name: v.type for v in read_model_description(str(cd.GEAR_FMU)).modelVariables}
+    enums = {n for n, t in names.items() if t == "Enumeration"}
+    # the main FMU: libcosim drops exactly the enumerations ...
+    assert set(cd.libcosim_variables(cd.GEAR_FMU)) == set(names) - enums
+    # ... the integer-coded one loses nothing; load_mode is an Integer libcosim can set
+    seen = cd.libcosim_variables(cd.GEAR_INTENUM_FMU)
+    assert set(seen) == set(names)
+    assert all(seen[n] == CosimVariableType.INTEGER.value for n in enums)
 
 
 def test_gear_ratio_of_the_scene(fmus):
@@ -185,7 +209,9 @@ def test_gear_ratio_of_the_scene(fmus):
 def test_libcosim_couples_the_fmus(run):
     r = run("libcosim", 1e-3)
     g, v = r.gear, r.vehicle
-    # torque-driven gear (load_mode = torque went through libcosim): Jacobi, one step late
+    # torque-driven gear (load_mode = torque set through libcosim as an Integer): the gear's
+    # wheel end takes the vehicle's half-shaft torque, Jacobi, one step late (with the speed
+    # governor of load_mode = speed, T_w_out would be the governor's torque instead)
     np.testing.assert_allclose(g["T_w_out"][1:], v["T_hs"][:-1], rtol=0, atol=1e-12)
     assert g["E_in"][-1] > 1000.0
     # while T_s holds 150 N.m, the wheel end sees it times the ratio, minus the mesh loss
