@@ -21,11 +21,19 @@ double hg_h_forced(double v_air, double L)
     return fmax(Nu_lam, Nu_mix) * K_AIR / L;
 }
 
+double hg_housing_h_conv(const hg_housing *h, double dT, double v_air)
+{
+    double hN = hg_h_natural(dT, h->L), hF = hg_h_forced(v_air, h->L);
+    return cbrt(hN * hN * hN + hF * hF * hF);
+}
+
+double hg_housing_heat_h(const hg_housing *h, double h_conv, double T_oil, double T_amb)
+{
+    double T2 = T_oil * T_oil, Ta2 = T_amb * T_amb;
+    return h->A * (h_conv * (T_oil - T_amb) + h->eps * SIGMA_SB * (T2 * T2 - Ta2 * Ta2));
+}
+
 double hg_housing_heat(const hg_housing *h, double T_oil, double T_amb, double v_air)
 {
-    double dT = T_oil - T_amb;
-    double hN = hg_h_natural(dT, h->L), hF = hg_h_forced(v_air, h->L);
-    double h_conv = cbrt(hN * hN * hN + hF * hF * hF);
-    double T2 = T_oil * T_oil, Ta2 = T_amb * T_amb;
-    return h->A * (h_conv * dT + h->eps * SIGMA_SB * (T2 * T2 - Ta2 * Ta2));
+    return hg_housing_heat_h(h, hg_housing_h_conv(h, T_oil - T_amb, v_air), T_oil, T_amb);
 }

@@ -28,9 +28,17 @@ typedef struct {
 double hg_h_natural(double dT, double L);
 double hg_h_forced(double v_air, double L);
 
-/* Heat flow from the housing at T_oil to the air at T_amb [W] (negative when the air is hotter),
- * air speed v_air [m/s] (0: natural convection only), temperatures in K. The housing wall is
- * taken at the oil temperature (lumped sump: the oil and the housing share one temperature). */
+/* The combined convective coefficient (h_N^3 + h_F^3)^(1/3) at the wall-to-air difference dT [K]
+ * and air speed v_air [m/s]. */
+double hg_housing_h_conv(const hg_housing *h, double dT, double v_air);
+
+/* Heat flow from the housing at T_oil to the air at T_amb [W] (negative when the air is hotter)
+ * with the convective coefficient h_conv [W/(m^2 K)], radiation included; temperatures in K.
+ * The housing wall is taken at the oil temperature (lumped sump: the oil and the housing share
+ * one temperature). */
+double hg_housing_heat_h(const hg_housing *h, double h_conv, double T_oil, double T_amb);
+
+/* The same with the correlations' coefficient at air speed v_air [m/s] (0: natural convection). */
 double hg_housing_heat(const hg_housing *h, double T_oil, double T_amb, double v_air);
 
 #endif

@@ -73,7 +73,7 @@ static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn
 /* Friction torques from the sliding direction (docs/physics.md §9.1): T_fp w_p + T_fg w_g = -P_loss.
  * Pairs carry the flank loads, so nothing while the teeth are apart; on the coast flank the
  * drive flank's contact data stand in for its own. */
-static void pair_friction(const hg_dyn_params *p, const hg_inputs *u, const double *y,
+static void pair_friction(const hg_dyn_params *p, const double *y,
                           int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
     int k, with_contact = p->friction.model != HG_FRICTION_MODEL_NONE || all_pairs;
@@ -82,7 +82,7 @@ static void pair_friction(const hg_dyn_params *p, const hg_inputs *u, const doub
     hg_gearset_pairs(p->gear, p->gear->N_p * y[HG_Y_PHI_P], with_contact, &geo);
     for (k = 0; k < HG_MAX_PAIRS; k++) {
         hg_pair_contact c;
-        double vs_x, vs_y, norm;
+        double vs_x, vs_y, norm, P_k;
         ev->W_pair[k] = geo.ls[k] * W;
         if (!with_contact) continue;
         c.W = ev->W_pair[k];
@@ -92,68 +92,102 @@ static void pair_friction(const hg_dyn_params *p, const hg_inputs *u, const doub
         c.u_g[1] = w_g * geo.ug[k][1];
         c.R_x = geo.R_x[k];
         c.R_y = geo.R_y[k];
-        c.T_bath = u->T_bath;
+        c.T_bath = ev->T_oil;
         hg_friction_pair(&p->friction, &c, &T_c_warm[k], &ev->pair[k]);
         vs_x = c.u_p[0] - c.u_g[0];
         vs_y = c.u_p[1] - c.u_g[1];
         norm = ev->pair[k].F_f / sqrt(vs_x * vs_x + vs_y * vs_y + SLIDE_EPS * SLIDE_EPS);
         ev->T_fp -= norm * (vs_x * geo.up[k][0] + vs_y * geo.up[k][1]);
         ev->T_fg += norm * (vs_x * geo.ug[k][0] + vs_y * geo.ug[k][1]);
-        ev->P_loss += norm * (vs_x * vs_x + vs_y * vs_y);
+        P_k = norm * (vs_x * vs_x + vs_y * vs_y);
+        ev->P_loss += P_k;
+        if (ev->pair[k].F_f > 0.0) ev->P_visc += P_k * ev->pair[k].F_v / ev->pair[k].F_f;
     }
 }
 
 /* The map level: the loss (1 - eta) of the power entering from the driving side, as a torque on
  * the pinion, so that T_fp w_p = -P_loss exactly. */
-static void map_loss(const hg_dyn_params *p, const hg_inputs *u, const double *y,
+static void map_loss(const hg_dyn_params *p, const double *y,
                      hg_dyn_eval *ev)
 {
     double w_p = y[HG_Y_W_P], T_1 = shaft1_torque(p, y), T_2p = shaft2_torque(p, y) / p->ratio;
     int coast = -T_2p * w_p > T_1 * w_p; /* power enters from the wheel side */
     double T_in = coast ? T_2p : T_1;
-    double eta = hg_effmap_eta(p->map, coast ? HG_MAP_COAST : HG_MAP_DRIVE, w_p, T_in, u->T_bath);
+    double eta = hg_effmap_eta(p->map, coast ? HG_MAP_COAST : HG_MAP_DRIVE, w_p, T_in, ev->T_oil);
     double T_loss = (1.0 - eta) * fabs(T_in), s = sqrt(w_p * w_p + SPIN_EPS * SPIN_EPS);
     ev->T_fp = -T_loss * w_p / s;
     ev->P_loss = T_loss * w_p * w_p / s;
 }
 
-static void losses(const hg_dyn_params *p, const hg_inputs *u, const double *y,
+static void losses(const hg_dyn_params *p, const double *y,
                    int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
     if (p->friction.model == HG_FRICTION_MODEL_MAP)
-        map_loss(p, u, y, ev);
+        map_loss(p, y, ev);
     else if (p->friction.model != HG_FRICTION_MODEL_NONE || all_pairs)
-        pair_friction(p, u, y, all_pairs, T_c_warm, ev);
+        pair_friction(p, y, all_pairs, T_c_warm, ev);
+}
+
+/* The other losses of the axle at the mesh load of ev (axle_losses = full). */
+static void axle_losses(const hg_dyn_params *p, const double *y, hg_dyn_eval *ev)
+{
+    hg_ledger_losses(&p->ledger, y[HG_Y_W_P], y[HG_Y_W_G], ev->W_t, ev->mesh.R_p, ev->R_g,
+                     ev->T_oil, &ev->axle);
 }
 
 /* Rigid mesh: the pinion-gear body's acceleration and the mesh load it implies. Friction needs
  * the load and changes the acceleration: one pass from the frictionless load suffices (the
  * friction torques change W_t by a fraction mu of the inertial part). */
-static void rigid_mesh(const hg_dyn_params *p, const hg_inputs *u, const double *y,
+static void rigid_mesh(const hg_dyn_params *p, const double *y,
                        int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
     double i = p->ratio, J = p->I_p + p->I_g / (i * i);
-    double T_1 = shaft1_torque(p, y), T_2 = shaft2_torque(p, y), acc;
+    double T_1 = shaft1_torque(p, y), T_2 = shaft2_torque(p, y), acc, T_p, T_g;
     acc = (T_1 - T_2 / i) / J;
     ev->W_t = (p->I_g * acc / i + T_2) / ev->R_g;
     net_force_loads(ev);
-    losses(p, u, y, all_pairs, T_c_warm, ev);
-    ev->acc_p = (T_1 - T_2 / i + ev->T_fp + ev->T_fg / i) / J;
-    ev->W_t = (p->I_g * ev->acc_p / i + T_2 - ev->T_fg) / ev->R_g;
+    losses(p, y, all_pairs, T_c_warm, ev);
+    axle_losses(p, y, ev);
+    T_p = ev->T_fp + ev->axle.T_p;
+    T_g = ev->T_fg + ev->axle.T_g;
+    ev->acc_p = (T_1 - T_2 / i + T_p + T_g / i) / J;
+    ev->W_t = (p->I_g * ev->acc_p / i + T_2 - T_g) / ev->R_g;
     net_force_loads(ev);
 }
 
-static void efficiency(const double *y, const hg_inputs *u, hg_dyn_eval *ev)
+static double efficiency_of(double P_loss, double P_in)
 {
-    double P_drive = u->T_s * y[HG_Y_W_S], P_coast = -ev->T_w * y[HG_Y_W_W];
-    ev->P_in = P_drive > P_coast ? P_drive : P_coast;
-    if (ev->P_in < 0.0) ev->P_in = 0.0;
-    if (ev->P_in > 0.0) {
-        ev->eta = 1.0 - ev->P_loss / ev->P_in;
-        if (ev->eta < 0.0) ev->eta = 0.0;
-    } else {
-        ev->eta = ev->P_loss > 0.0 ? 0.0 : 1.0;
-    }
+    if (P_in > 0.0) return fmax(0.0, 1.0 - P_loss / P_in);
+    return P_loss > 0.0 ? 0.0 : 1.0;
+}
+
+/* What one side supplies: the power at its free end while that end drives with more than the
+ * losses P_scale (the paper's input power in steady drive), else what its member delivers (an
+ * inertia carries the power: coast, tip-out, a torque reversal); in between the member's excess
+ * fades in linearly, so that the efficiencies stay continuous when the end's power changes sign. */
+static double source_power(double P_end, double P_member, double P_scale)
+{
+    double s = P_end <= 0.0 ? 0.0 : P_end >= P_scale ? 1.0 : P_end / P_scale;
+    return P_end + fmax(P_member - P_end, 0.0) * (1.0 - s);
+}
+
+/* Efficiencies on the power that enters from the side that drives at this instant. The pinion
+ * delivers (R_p W_t - T_fp) w_p into the mesh, the gear -(R_g W_t + T_fg) w_g; into the axle
+ * each member delivers that plus what its own bearings, seals and churning take. Free ends:
+ * T_s w_s and -T_w w_w. */
+static void efficiency(const hg_inputs *u, const double *y, hg_dyn_eval *ev)
+{
+    double w_p = y[HG_Y_W_P], w_g = y[HG_Y_W_G];
+    double end_s = u->T_s * y[HG_Y_W_S], end_w = -ev->T_w * y[HG_Y_W_W];
+    double mesh_p = (ev->mesh.R_p * ev->W_t - ev->T_fp) * w_p;
+    double mesh_g = -(ev->R_g * ev->W_t + ev->T_fg) * w_g;
+    ev->P_in = fmax(0.0, fmax(source_power(end_s, mesh_p, ev->P_loss),
+                              source_power(end_w, mesh_g, ev->P_loss)));
+    ev->eta = efficiency_of(ev->P_loss, ev->P_in);
+    ev->P_axle = ev->P_loss + ev->axle.P_churn + ev->axle.P_bearings + ev->axle.P_seals;
+    ev->P_in_axle = fmax(0.0, fmax(source_power(end_s, mesh_p - ev->axle.T_p * w_p, ev->P_axle),
+                                   source_power(end_w, mesh_g - ev->axle.T_g * w_g, ev->P_axle)));
+    ev->eta_axle = efficiency_of(ev->P_axle, ev->P_in_axle);
 }
 
 void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const double *y,
@@ -161,17 +195,21 @@ void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const
 {
     double d1 = y[HG_Y_W_S] - y[HG_Y_W_P], d2 = y[HG_Y_W_G] - y[HG_Y_W_W];
     memset(ev, 0, sizeof *ev);
+    ev->T_oil = p->ledger.sump ? y[HG_Y_T_OIL] : u->T_bath;
     mesh_state(p, mode, y, ev);
     if (p->speed_governor)
         ev->T_w = u->T_s * p->ratio + p->K_p * (y[HG_Y_W_W] - u->w_set / p->ratio) +
                   p->K_i * y[HG_Y_GOV];
     else
         ev->T_w = u->T_w;
-    if (p->mesh == HG_MESH_MODEL_RIGID)
-        rigid_mesh(p, u, y, all_pairs, T_c_warm, ev);
-    else
-        losses(p, u, y, all_pairs, T_c_warm, ev);
-    efficiency(y, u, ev);
+    if (p->mesh == HG_MESH_MODEL_RIGID) {
+        rigid_mesh(p, y, all_pairs, T_c_warm, ev);
+    } else {
+        losses(p, y, all_pairs, T_c_warm, ev);
+        axle_losses(p, y, ev);
+    }
+    efficiency(u, y, ev);
+    ev->Q_dot = hg_ledger_heat_out(&p->ledger, ev->T_oil, u->T_amb, u->v_air);
     ev->P_damp = p->c_t1 * d1 * d1 + p->c_t2 * d2 * d2 + p->c_m * ev->g * ev->xdot * ev->xdot;
     if (p->mesh == HG_MESH_MODEL_VARYING) {
         double N_p_w = p->gear->N_p * y[HG_Y_W_P];
@@ -192,8 +230,9 @@ void hg_dyn_derivatives(const hg_dyn_params *p, const hg_inputs *u, const double
         ydot[HG_Y_W_P] = ev->acc_p;
         ydot[HG_Y_W_G] = ev->acc_p / p->ratio;
     } else {
-        ydot[HG_Y_W_P] = (T_1 - ev->mesh.R_p * ev->W_t + ev->T_fp) / p->I_p;      /* eq. 21 */
-        ydot[HG_Y_W_G] = (ev->R_g * ev->W_t - T_2 + ev->T_fg) / p->I_g;           /* eq. 22, D3 of docs/physics.md §0 */
+        ydot[HG_Y_W_P] = (T_1 - ev->mesh.R_p * ev->W_t + ev->T_fp + ev->axle.T_p) / p->I_p; /* eq. 21 */
+        ydot[HG_Y_W_G] = (ev->R_g * ev->W_t - T_2 + ev->T_fg + ev->axle.T_g) /
+                         p->I_g; /* eq. 22, D3 of docs/physics.md §0 */
     }
     ydot[HG_Y_W_W] = (T_2 - ev->T_w) / p->I_w;                                     /* eq. 23 */
     ydot[HG_Y_GOV] = p->speed_governor ? y[HG_Y_W_W] - u->w_set / p->ratio : 0.0;
@@ -203,6 +242,13 @@ void hg_dyn_derivatives(const hg_dyn_params *p, const hg_inputs *u, const double
     ydot[HG_Y_E_DAMP] = ev->P_damp;
     ydot[HG_Y_E_EXC] = ev->P_exc;
     ydot[HG_Y_ETA2] = ev->eta * ev->eta;
+    /* the sump: C_sump dT_oil/dt = the axle's losses - the heat to the air */
+    ydot[HG_Y_T_OIL] = p->ledger.sump ? (ev->P_axle - ev->Q_dot) / p->ledger.C_sump : 0.0;
+    ydot[HG_Y_Q_H] = ev->Q_dot;
+    ydot[HG_Y_E_CHURN] = ev->axle.P_churn;
+    ydot[HG_Y_E_BEAR] = ev->axle.P_bearings;
+    ydot[HG_Y_E_SEAL] = ev->axle.P_seals;
+    ydot[HG_Y_ETA_AXLE2] = ev->eta_axle * ev->eta_axle;
 }
 
 double hg_dyn_stored_energy(const hg_dyn_params *p, const double *y, const hg_dyn_eval *ev)

@@ -10,6 +10,7 @@
 #include "model/effmap.h"
 #include "model/friction.h"
 #include "model/gearset.h"
+#include "model/ledger.h"
 
 enum {
     HG_Y_TWIST1, /* phi_s - phi_p [rad] */
@@ -20,6 +21,10 @@ enum {
     HG_Y_GOV,    /* integral of the governor's wheel-speed error [rad] */
     HG_Y_E_IN, HG_Y_E_OUT, HG_Y_E_FRIC, HG_Y_E_DAMP, HG_Y_E_EXC, /* energy audit [J] */
     HG_Y_ETA2,   /* integral of eta^2 dt [s] */
+    HG_Y_T_OIL,  /* oil temperature of the sump [K] (thermal_model = sump; else unused) */
+    HG_Y_Q_H,    /* heat given to the air [J] */
+    HG_Y_E_CHURN, HG_Y_E_BEAR, HG_Y_E_SEAL, /* the axle's other losses [J] */
+    HG_Y_ETA_AXLE2, /* integral of eta_axle^2 dt [s] */
     HG_NY
 };
 
@@ -37,6 +42,7 @@ typedef struct {
     const hg_effmap *map;        /* friction_model = map: efficiency of the rigid gear */
     int speed_governor;          /* load_mode = speed */
     double K_p, K_i;             /* governor gains [N m s/rad], [N m/rad] */
+    hg_ledger ledger;            /* churning, bearings, seals and the sump (docs/axle.md) */
 } hg_dyn_params;
 
 typedef struct {
@@ -53,6 +59,11 @@ typedef struct {
     double T_fp, T_fg; /* friction torques on pinion and gear [N m] */
     double acc_p;      /* pinion acceleration of the rigid mesh [rad/s^2] */
     double P_loss, P_in, eta;
+    double P_visc;     /* viscous part of P_loss [W] */
+    double T_oil;      /* oil temperature used by every loss [K] */
+    hg_ledger_eval axle; /* the other losses of the axle */
+    double P_axle, P_in_axle, eta_axle;
+    double Q_dot;      /* heat from the housing to the air [W] */
     double P_damp, P_exc; /* damper dissipation and parametric excitation power [W] */
     double W_pair[HG_MAX_PAIRS];
     hg_pair_friction pair[HG_MAX_PAIRS];

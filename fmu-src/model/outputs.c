@@ -71,5 +71,20 @@ void hg_outputs_write(const hg_setup *s, const hg_runtime *rt, long steps, long 
     v->E_damping = y[HG_Y_E_DAMP];
     v->E_excitation = y[HG_Y_E_EXC];
     v->E_stored = hg_dyn_stored_energy(&s->p, y, &ev);
+    v->P_loss_viscous = ev.P_visc;
+    v->P_loss_boundary = ev.P_loss - ev.P_visc;
+    v->P_churn = ev.axle.P_churn;
+    v->P_bearings = ev.axle.P_bearings;
+    v->P_seals = ev.axle.P_seals;
+    v->P_axle = ev.P_axle;
+    v->P_in_axle = ev.P_in_axle;
+    v->eta_axle = ev.eta_axle;
+    v->eta_axle_cycle = rt->eta_axle_cycle;
+    v->T_oil = ev.T_oil;
+    v->Q_dot_housing = ev.Q_dot;
+    v->Q_housing = y[HG_Y_Q_H];
+    v->E_churn = y[HG_Y_E_CHURN];
+    v->E_bearings = y[HG_Y_E_BEAR];
+    v->E_seals = y[HG_Y_E_SEAL];
     write_pairs(v, &ev);
 }

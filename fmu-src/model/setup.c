@@ -198,7 +198,9 @@ static void tolerances(hg_setup *s, const hg_vars *v)
     t[HG_Y_W_S] = t[HG_Y_W_P] = a * w4 / R_p;
     t[HG_Y_W_G] = t[HG_Y_W_W] = a * w4 / R_g;
     t[HG_Y_E_IN] = t[HG_Y_E_OUT] = t[HG_Y_E_FRIC] = t[HG_Y_E_DAMP] = t[HG_Y_E_EXC] = E;
-    t[HG_Y_ETA2] = 1e-9;
+    t[HG_Y_ETA2] = t[HG_Y_ETA_AXLE2] = 1e-9;
+    t[HG_Y_E_CHURN] = t[HG_Y_E_BEAR] = t[HG_Y_E_SEAL] = t[HG_Y_Q_H] = E;
+    t[HG_Y_T_OIL] = 1e-6; /* K */
     s->rtol = v->rtol;
     s->fixed_step = v->solver == HG_SOLVER_NEWMARK;
     s->max_step = v->max_step;
@@ -217,6 +219,9 @@ int hg_setup_load(hg_setup *s, const char *resource_dir, const hg_logger *lg, hg
     if (load_map(s, resource_dir, v, err, errlen)) return -1;
     if (damping(s, lg, v, err, errlen)) return -1;
     hg_plausibility_warn(v, lg);
+    if (hg_ledger_setup(&s->p.ledger, v, v->gear_set_file[0] ? 0 : v->gear_set, &s->lub, err,
+                        errlen))
+        return -1;
     v->R_p0 = s->p.R_p0;
     v->k_m0 = s->p.k_m0;
     v->ratio = s->p.ratio;

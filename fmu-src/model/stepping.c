@@ -34,8 +34,9 @@ void hg_stepping_start(hg_runtime *rt, const hg_setup *s, const hg_vars *v, doub
     y[HG_Y_W_S] = y[HG_Y_W_P] = v->w_p0;
     y[HG_Y_W_G] = y[HG_Y_W_W] = v->w_p0 / p->ratio;
     rt->mode = hg_backlash_mode(y[HG_Y_X], p->backlash.b);
+    y[HG_Y_T_OIL] = v->T_oil0;
     for (k = 0; k < HG_MAX_PAIRS; k++) rt->T_c_warm[k] = -1.0;
-    rt->eta_cycle = 1.0;
+    rt->eta_cycle = rt->eta_axle_cycle = 1.0;
     rt->restart = 1;
 }
 
@@ -135,6 +136,7 @@ void hg_stepping_window_event(hg_runtime *rt, const hg_logger *lg)
     if (T > 0.0) {
         rt->eta_cycle = sqrt((rt->y[HG_Y_ETA2] - rt->win_eta2_0) / T);
         rt->P_loss_cycle = (rt->y[HG_Y_E_FRIC] - rt->win_efric_0) / T;
+        rt->eta_axle_cycle = sqrt((rt->y[HG_Y_ETA_AXLE2] - rt->win_eta_axle2_0) / T);
     }
     rt->windows++;
     hg_logf(lg, "logEvents", "t = %.6f s: averaging window %d complete: eta_cycle = %.6f, "
@@ -143,18 +145,21 @@ void hg_stepping_window_event(hg_runtime *rt, const hg_logger *lg)
     rt->win_t0 = rt->t;
     rt->win_eta2_0 = rt->y[HG_Y_ETA2];
     rt->win_efric_0 = rt->y[HG_Y_E_FRIC];
+    rt->win_eta_axle2_0 = rt->y[HG_Y_ETA_AXLE2];
 }
 
 static double rpm(double w) { return w * 30.0 / 3.141592653589793; }
 
 /* The map holds its edge values beyond its grid: say so once per run. */
-static void check_map_range(hg_runtime *rt, const hg_effmap *map, const hg_logger *lg)
+static void check_map_range(hg_runtime *rt, const hg_effmap *map, int s_sump,
+                            const hg_logger *lg)
 {
-    double w = rt->y[HG_Y_W_P], T = rt->u_end.T_s, K = rt->u_end.T_bath;
+    double w = rt->y[HG_Y_W_P], T = rt->u_end.T_s;
+    double K = s_sump ? rt->y[HG_Y_T_OIL] : rt->u_end.T_bath;
     if (!map || rt->map_warned || hg_effmap_inside(map, w, T, K)) return;
     rt->map_warned = 1;
     hg_logf(lg, "logStatusWarning",
-            "t = %.6g s: operating point %.0f rpm, T_s = %.1f N.m, T_bath = %.1f degC lies "
+            "t = %.6g s: operating point %.0f rpm, T_s = %.1f N.m, T_oil = %.1f degC lies "
             "outside the efficiency map (%.0f-%.0f rpm, %.0f-%.0f N.m, %.0f-%.0f degC): the "
             "map holds its edge values there",
             rt->t, rpm(fabs(w)), T, K - 273.15, rpm(map->w[0]), rpm(map->w[map->n_w - 1]),
@@ -166,5 +171,5 @@ void hg_stepping_end(hg_runtime *rt, const hg_setup *s, double t_end, const hg_l
 {
     rt->t = t_end;
     hg_stepping_inputs_at(rt, t_end, &rt->u_end);
-    check_map_range(rt, s->p.map, lg);
+    check_map_range(rt, s->p.map, s->p.ledger.sump, lg);
 }

@@ -20,9 +20,9 @@ typedef struct {
     hg_inputs u_end;               /* inputs extrapolated to the end of the last step */
     int restart;                   /* the integrator must restart before the next step */
     double win_phi0, win_t0;       /* start of the averaging window: pinion angle, time */
-    double win_eta2_0, win_efric_0;
+    double win_eta2_0, win_efric_0, win_eta_axle2_0;
     int windows;                   /* averaging windows completed */
-    double eta_cycle, P_loss_cycle;
+    double eta_cycle, P_loss_cycle, eta_axle_cycle;
     int map_warned;                /* the map level has said once that it left its grid */
 } hg_runtime;
 

@@ -1,0 +1,182 @@
+/* The loss ledger and sump: see ledger.h and docs/axle.md. */
+#include "model/ledger.h"
+
+#include <math.h>
+
+#include "axle/seals.h"
+#include "io/errmsg.h"
+#include "tribo/rheology.h"
+
+#define DEG (3.14159265358979323846 / 180.0)
+#define SPIN_EPS 1e-2   /* regularisation of the rotation direction of the loss torques [rad/s] */
+#define RHO_EXPANSION 7e-4 /* volumetric expansion of gear oils [1/K] (assumed, docs/axle.md) */
+#define T_15C 288.15
+
+/* The built-in gear sets' blanks: Paouris et al. 2016 Table 1 and the blank data of
+ * resources/gearsets/gearsetN.txt (ring outer pitch diameter 2 A_e2 sin(delta_2)). */
+typedef struct {
+    double ring_d, ring_b, r_m_p, r_m_g, delta_p, delta_g, beta_p, beta_g;
+} builtin_blank;
+
+static const builtin_blank BLANKS[3] = {
+    {2 * 95.60e-3 * 0.862935, 30.00e-3, 31.57e-3, 68.53e-3, 29.05, 59.65, 46.00, 27.60},
+    {2 * 112.53e-3 * 0.879649, 38.20e-3, 34.48e-3, 81.00e-3, 27.77, 61.60, 40.00, 26.96},
+    {2 * 107.80e-3 * 0.918446, 36.50e-3, 28.10e-3, 82.26e-3, 22.74, 66.70, 40.00, 26.62},
+};
+
+/* a parameter left at 0 takes the built-in set's value; for a user file it must be set */
+static int blank_value(const char *name, double given, double builtin, int set, double *out,
+                       char *err, size_t errlen)
+{
+    if (given > 0.0) {
+        *out = given;
+        return 0;
+    }
+    if (!set) {
+        hg_errorf(err, errlen, "axle_losses = full with a gear_set_file needs the gear blank: "
+                  "set %s (it is 0, i.e. 'from the built-in gear set')", name);
+        return -1;
+    }
+    *out = builtin;
+    return 0;
+}
+
+static int blank(hg_ledger *a, const hg_vars *v, int set, char *err, size_t errlen)
+{
+    const builtin_blank *b = &BLANKS[set ? set - 1 : 0];
+    double ring_d;
+    if (blank_value("ring_d [m]", v->ring_d, b->ring_d, set, &ring_d, err, errlen) ||
+        blank_value("ring_b [m]", v->ring_b, b->ring_b, set, &a->churn.b, err, errlen) ||
+        blank_value("r_m_p [m]", v->r_m_p, b->r_m_p, set, &a->pinion.r_m, err, errlen) ||
+        blank_value("r_m_g [m]", v->r_m_g, b->r_m_g, set, &a->gear.r_m, err, errlen) ||
+        blank_value("delta_p [rad]", v->delta_p, b->delta_p * DEG, set, &a->pinion.delta, err,
+                    errlen) ||
+        blank_value("delta_g [rad]", v->delta_g, b->delta_g * DEG, set, &a->gear.delta, err,
+                    errlen) ||
+        blank_value("beta_p [rad]", v->beta_p, b->beta_p * DEG, set, &a->pinion.beta, err,
+                    errlen) ||
+        blank_value("beta_g [rad]", v->beta_g, b->beta_g * DEG, set, &a->gear.beta, err, errlen))
+        return -1;
+    a->churn.R_p = 0.5 * ring_d;
+    a->pinion.alpha_n = a->gear.alpha_n = v->alpha_n;
+    if (v->oil_level <= 0.0 || v->oil_level > a->churn.R_p) {
+        hg_errorf(err, errlen, "oil_level = %g m: the oil must wet the ring gear (> 0) and stay "
+                  "at or below its axis (<= ring pitch radius %g m)", v->oil_level, a->churn.R_p);
+        return -1;
+    }
+    a->churn.h = v->oil_level;
+    a->churn.V_0 = v->V_oil;
+    return 0;
+}
+
+static int pair_geometry(const char *shaft, const char *n1, double x1, const char *n2, double x2,
+                         char *err, size_t errlen)
+{
+    if (x2 > x1) return 0;
+    hg_errorf(err, errlen, "%s bearings: %s = %g m must lie farther from the mean point than "
+              "%s = %g m (a pair with no spacing cannot carry the mesh force)", shaft, n2, x2, n1,
+              x1);
+    return -1;
+}
+
+static void bearings(hg_ledger *a, const hg_vars *v)
+{
+    const double dm[HG_N_BRG] = {v->brg_ph_dm, v->brg_pt_dm, v->brg_gn_dm, v->brg_gf_dm};
+    const double Y[HG_N_BRG] = {v->brg_ph_Y, v->brg_pt_Y, v->brg_gn_Y, v->brg_gf_Y};
+    int k;
+    for (k = 0; k < HG_N_BRG; k++) {
+        a->brg[k].d_m = dm[k];
+        a->brg[k].Y = Y[k];
+        a->brg[k].f_0 = v->brg_f0;
+        a->brg[k].f_1 = v->brg_f1;
+    }
+    a->x_brg[HG_BRG_P_HEAD] = v->brg_ph_x;
+    a->x_brg[HG_BRG_P_TAIL] = v->brg_pt_x;
+    /* the carrier's ring-side bearing lies behind the ring (away from its apex), the far one on
+     * the other side of the differential */
+    a->x_brg[HG_BRG_G_NEAR] = v->brg_gn_x;
+    a->x_brg[HG_BRG_G_FAR] = -v->brg_gf_x;
+    a->F_pre_p = v->F_pre_p;
+    a->F_pre_g = v->F_pre_g;
+}
+
+int hg_ledger_setup(hg_ledger *a, const hg_vars *v, int gear_set_builtin,
+                    const hg_lubricant *lub, char *err, size_t errlen)
+{
+    a->full = v->axle_losses == HG_AXLE_LOSSES_FULL;
+    a->sump = v->thermal_model == HG_THERMAL_MODEL_SUMP;
+    a->lub = lub;
+    a->housing.A = v->A_housing;
+    a->housing.L = v->L_housing;
+    a->housing.eps = v->eps_housing;
+    a->h_housing = v->h_housing;
+    a->C_sump = v->C_sump;
+    if (!a->full) return 0;
+    if (blank(a, v, gear_set_builtin, err, errlen)) return -1;
+    bearings(a, v);
+    if (pair_geometry("pinion", "brg_ph_x", v->brg_ph_x, "brg_pt_x", v->brg_pt_x, err, errlen))
+        return -1;
+    a->T_seal_p = hg_seal_torque(v->d_seal_p);
+    a->T_seal_w = 2.0 * hg_seal_torque(v->d_seal_w);
+    return 0;
+}
+
+double hg_ledger_rho(const hg_lubricant *lub, double T)
+{
+    return lub->rho_15 * (1.0 - RHO_EXPANSION * (T - T_15C));
+}
+
+double hg_ledger_nu(const hg_lubricant *lub, double T)
+{
+    return exp(hg_vogel_ln_eta0(log(lub->vogel_a), lub->vogel_b, lub->vogel_c, T)) /
+           hg_ledger_rho(lub, T);
+}
+
+/* bearing loads of one shaft from the mesh force on its member */
+static void shaft_bearings(const hg_ledger *a, const hg_member_geom *m, int driving, double F_t,
+                           double s, int k1, double F_pre, hg_ledger_eval *ev)
+{
+    hg_mesh_force f = hg_mesh_force_components(m, F_t, s, driving);
+    int k2 = k1 + 1;
+    hg_shaft_reactions(&f, m->r_m, a->x_brg[k1], a->x_brg[k2], &ev->Fr[k1], &ev->Fr[k2]);
+    hg_trb_pair_axial(ev->Fr[k1], a->brg[k1].Y, ev->Fr[k2], a->brg[k2].Y, f.F_a, F_pre,
+                      &ev->Fa[k1], &ev->Fa[k2]);
+}
+
+/* torque of magnitude M opposing rotation at w, and the power it takes */
+static double opposing(double M, double w, double *T)
+{
+    double s = w / sqrt(w * w + SPIN_EPS * SPIN_EPS);
+    *T -= M * s;
+    return M * s * w;
+}
+
+void hg_ledger_losses(const hg_ledger *a, double w_p, double w_g, double W_t, double R_p,
+                      double R_g, double T_oil, hg_ledger_eval *ev)
+{
+    double s = W_t >= 0.0 ? 1.0 : -1.0, nu, rho, M_p = 0.0, M_g = 0.0;
+    int k;
+    *ev = (hg_ledger_eval){0};
+    if (!a->full) return;
+    nu = hg_ledger_nu(a->lub, T_oil);
+    rho = hg_ledger_rho(a->lub, T_oil);
+    shaft_bearings(a, &a->pinion, 1, fabs(W_t) * R_p / a->pinion.r_m, s, HG_BRG_P_HEAD,
+                   a->F_pre_p, ev);
+    /* the carrier: the ring-side bearing takes a thrust away from the ring's apex */
+    shaft_bearings(a, &a->gear, 0, fabs(W_t) * R_g / a->gear.r_m, s, HG_BRG_G_NEAR, a->F_pre_g,
+                   ev);
+    for (k = HG_BRG_P_HEAD; k <= HG_BRG_P_TAIL; k++)
+        M_p += hg_trb_torque(&a->brg[k], ev->Fa[k], nu, w_p);
+    for (k = HG_BRG_G_NEAR; k <= HG_BRG_G_FAR; k++)
+        M_g += hg_trb_torque(&a->brg[k], ev->Fa[k], nu, w_g);
+    ev->P_bearings = opposing(M_p, w_p, &ev->T_p) + opposing(M_g, w_g, &ev->T_g);
+    ev->P_seals = opposing(a->T_seal_p, w_p, &ev->T_p) + opposing(a->T_seal_w, w_g, &ev->T_g);
+    ev->P_churn = opposing(hg_churn_torque(&a->churn, rho, nu, w_g), w_g, &ev->T_g);
+}
+
+double hg_ledger_heat_out(const hg_ledger *a, double T_oil, double T_amb, double v_air)
+{
+    double h = a->h_housing > 0.0 ? a->h_housing
+                                  : hg_housing_h_conv(&a->housing, T_oil - T_amb, v_air);
+    return hg_housing_heat_h(&a->housing, h, T_oil, T_amb);
+}
