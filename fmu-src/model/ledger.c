@@ -15,13 +15,14 @@
 /* The built-in gear sets' blanks: Paouris et al. 2016 Table 1 and the blank data of
  * resources/gearsets/gearsetN.txt (ring outer pitch diameter 2 A_e2 sin(delta_2)). */
 typedef struct {
-    double ring_d, ring_b, r_m_p, r_m_g, delta_p, delta_g, beta_p, beta_g;
+    double A_e2, ring_b, r_m_p, r_m_g, delta_p, delta_g, beta_p, beta_g; /* m, deg */
 } builtin_blank;
 
+/* A_e2: outer cone distance of the ring gear; ring_d = 2 A_e2 sin(delta_g) */
 static const builtin_blank BLANKS[3] = {
-    {2 * 95.60e-3 * 0.862935, 30.00e-3, 31.57e-3, 68.53e-3, 29.05, 59.65, 46.00, 27.60},
-    {2 * 112.53e-3 * 0.879649, 38.20e-3, 34.48e-3, 81.00e-3, 27.77, 61.60, 40.00, 26.96},
-    {2 * 107.80e-3 * 0.918446, 36.50e-3, 28.10e-3, 82.26e-3, 22.74, 66.70, 40.00, 26.62},
+    {95.60e-3, 30.00e-3, 31.57e-3, 68.53e-3, 29.05, 59.65, 46.00, 27.60},
+    {112.53e-3, 38.20e-3, 34.48e-3, 81.00e-3, 27.77, 61.60, 40.00, 26.96},
+    {107.80e-3, 36.50e-3, 28.10e-3, 82.26e-3, 22.74, 66.70, 40.00, 26.62},
 };
 
 /* a parameter left at 0 takes the built-in set's value; for a user file it must be set */
@@ -45,7 +46,8 @@ static int blank(hg_ledger *a, const hg_vars *v, int set, char *err, size_t errl
 {
     const builtin_blank *b = &BLANKS[set ? set - 1 : 0];
     double ring_d;
-    if (blank_value("ring_d [m]", v->ring_d, b->ring_d, set, &ring_d, err, errlen) ||
+    if (blank_value("ring_d [m]", v->ring_d, 2.0 * b->A_e2 * sin(b->delta_g * DEG), set, &ring_d, err,
+                    errlen) ||
         blank_value("ring_b [m]", v->ring_b, b->ring_b, set, &a->churn.b, err, errlen) ||
         blank_value("r_m_p [m]", v->r_m_p, b->r_m_p, set, &a->pinion.r_m, err, errlen) ||
         blank_value("r_m_g [m]", v->r_m_g, b->r_m_g, set, &a->gear.r_m, err, errlen) ||

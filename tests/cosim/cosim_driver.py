@@ -388,8 +388,9 @@ def make_container(scene, h, directory):
     node.add_fmu("vehicle.fmu")
     node.add_link("gear.fmu", "w_w", "vehicle.fmu", "w_w")
     node.add_link("vehicle.fmu", "T_hs", "gear.fmu", "T_w")
-    for name in ("T_s", "T_bath", "w_set"):  # w_set: unused with load_mode = torque
+    for name in ("T_s", "T_bath", "w_set", "T_amb", "v_air"):  # w_set: unused (load_mode torque)
         node.add_input(name, "gear.fmu", name)
+    node.add_input("T_brake", "vehicle.fmu", "T_brake")
     for name, value in scene.gear_start().items():
         if name != "T_s":
             node.add_start_value("gear.fmu", name, repr(value))

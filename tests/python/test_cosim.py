@@ -1,5 +1,5 @@
 """The gear FMU in real co-simulation hosts, coupled to the vehicle FMU
-(build/LongitudinalVehicle.fmu, tests/cosim/vehicle/): libcosim (libcosimpy), our own fmpy
+(build/LongitudinalVehicle.fmu, examples/vehicle/): libcosim (libcosimpy), our own fmpy
 master with the same Jacobi algorithm, and an fmu-manipulation-toolbox container run by fmpy.
 The scene, the masters and the energy balance are in tests/cosim/cosim_driver.py;
 docs/cosimulation.md has the design and the figures.

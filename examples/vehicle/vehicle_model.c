@@ -7,6 +7,7 @@
 /* Start values of the inputs and parameters, by value reference (outputs: 0). */
 static const double start_values[VM_NUM_VARS] = {
     [VR_W_W] = 0.0,
+    [VR_T_BRAKE] = 0.0,  /* N.m, brake torque of all wheels */
     [VR_M] = 1500.0,     /* kg, passenger car with driver */
     [VR_R_DYN] = 0.3,    /* m, dynamic rolling radius */
     [VR_J_WHEELS] = 3.0, /* kg.m2, four wheels, tyres, discs and half-shafts at the wheel */
@@ -21,6 +22,7 @@ static const double start_values[VM_NUM_VARS] = {
     [VR_V0] = 0.0,       /* m/s */
     [VR_T_HS0] = 0.0,    /* N.m, half-shaft torque (twist) at the start */
     [VR_H_MAX] = 1e-4,   /* s, largest internal RK4 step */
+    [VR_COUPLING] = VM_HALF_SHAFT,
 };
 
 void vm_reset(vm_model *m, double t0)
@@ -48,6 +50,9 @@ const char *vm_check_parameters(const vm_model *m)
     if (!(v[VR_C_HS] >= 0.0)) return "c_hs must be >= 0";
     if (!(v[VR_V_EPS] > 0.0)) return "v_eps must be > 0";
     if (!(v[VR_H_MAX] > 0.0)) return "h_max must be > 0";
+    if (v[VR_COUPLING] != VM_HALF_SHAFT && v[VR_COUPLING] != VM_ROAD_LOAD)
+        return "coupling must be 1 (half-shaft) or 2 (road load)";
+    if (!(v[VR_T_BRAKE] >= 0.0)) return "T_brake must be >= 0";
     return NULL;
 }
 
@@ -56,6 +61,8 @@ void vm_initial_state(vm_model *m)
     memset(m->s, 0, sizeof m->s);
     if (m->v[VR_K_HS] > 0.0) m->s[S_TWIST] = m->v[VR_T_HS0] / m->v[VR_K_HS];
     if (m->v[VR_R_DYN] > 0.0) m->s[S_W_WHEEL] = m->v[VR_V0] / m->v[VR_R_DYN];
+    m->w_w_prev = m->v[VR_W_W];
+    if (m->v[VR_COUPLING] == VM_ROAD_LOAD) m->v[VR_A] = 0.0;
     vm_outputs(m);
 }
 
@@ -73,62 +80,94 @@ static double inertia(const double *p)
     return p[VR_M] * p[VR_R_DYN] * p[VR_R_DYN] + p[VR_J_WHEELS];
 }
 
-static void rhs(const double *p, double w_w, const double *s, double *ds)
+static int road_load_coupling(const double *p) { return p[VR_COUPLING] == VM_ROAD_LOAD; }
+
+/* the wheel speed: a state (half-shaft) or the input (road load) */
+static double wheel_speed(const double *p, const double *s)
 {
-    double slip = w_w - s[S_W_WHEEL];
-    double t_hs = p[VR_K_HS] * s[S_TWIST] + p[VR_C_HS] * slip;
-    double v = p[VR_R_DYN] * s[S_W_WHEEL], f_resist, f_grade;
+    return road_load_coupling(p) ? p[VR_W_W] : s[S_W_WHEEL];
+}
+
+/* brake torque at the wheels, opposing their rotation */
+static double brake_torque(const double *p, double v)
+{
+    return p[VR_T_BRAKE] * tanh(v / p[VR_V_EPS]);
+}
+
+/* the output torque at the flange: half-shaft torque or road load */
+static double flange_torque(const double *p, const double *s)
+{
+    double v = p[VR_R_DYN] * wheel_speed(p, s), f_resist, f_grade;
+    if (!road_load_coupling(p))
+        return p[VR_K_HS] * s[S_TWIST] + p[VR_C_HS] * (p[VR_W_W] - s[S_W_WHEEL]);
     road_load(p, v, &f_resist, &f_grade);
-    ds[S_TWIST] = slip;
-    ds[S_W_WHEEL] = (t_hs - p[VR_R_DYN] * (f_resist + f_grade)) / inertia(p);
+    return p[VR_R_DYN] * (f_resist + f_grade) + brake_torque(p, v);
+}
+
+static void rhs(const double *p, const double *s, double *ds)
+{
+    double w = wheel_speed(p, s), slip = p[VR_W_W] - w, own = !road_load_coupling(p);
+    double t_hs = flange_torque(p, s), v = p[VR_R_DYN] * w, f_resist, f_grade;
+    double t_b = brake_torque(p, v);
+    road_load(p, v, &f_resist, &f_grade);
+    ds[S_TWIST] = own * slip;
+    ds[S_W_WHEEL] = own * (t_hs - p[VR_R_DYN] * (f_resist + f_grade) - t_b) / inertia(p);
     ds[S_X] = v;
-    ds[S_E_IN] = t_hs * w_w;
+    ds[S_E_IN] = t_hs * p[VR_W_W];
     ds[S_E_ROAD] = f_resist * v;
-    ds[S_E_DAMPER] = p[VR_C_HS] * slip * slip;
+    ds[S_E_DAMPER] = own * p[VR_C_HS] * slip * slip;
+    ds[S_E_BRAKE] = t_b * w;
 }
 
 void vm_step(vm_model *m, double h)
 {
     const double *p = m->v;
-    double w_w = p[VR_W_W], k1[VM_NUM_STATES], k2[VM_NUM_STATES], k3[VM_NUM_STATES],
-           k4[VM_NUM_STATES], y[VM_NUM_STATES];
+    double k1[VM_NUM_STATES], k2[VM_NUM_STATES], k3[VM_NUM_STATES], k4[VM_NUM_STATES],
+           y[VM_NUM_STATES];
     int n = (int)ceil(h / p[VR_H_MAX] - 1e-9), i, j;
     double dt;
     if (n < 1) n = 1;
     dt = h / n;
     for (i = 0; i < n; i++) { /* classical RK4; the input is held over the step */
-        rhs(p, w_w, m->s, k1);
+        rhs(p, m->s, k1);
         for (j = 0; j < VM_NUM_STATES; j++) y[j] = m->s[j] + 0.5 * dt * k1[j];
-        rhs(p, w_w, y, k2);
+        rhs(p, y, k2);
         for (j = 0; j < VM_NUM_STATES; j++) y[j] = m->s[j] + 0.5 * dt * k2[j];
-        rhs(p, w_w, y, k3);
+        rhs(p, y, k3);
         for (j = 0; j < VM_NUM_STATES; j++) y[j] = m->s[j] + dt * k3[j];
-        rhs(p, w_w, y, k4);
+        rhs(p, y, k4);
         for (j = 0; j < VM_NUM_STATES; j++)
             m->s[j] += dt / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j]);
     }
     m->time += h;
     vm_outputs(m);
+    if (road_load_coupling(p) && h > 0.0) { /* the acceleration over the last step */
+        m->v[VR_A] = p[VR_R_DYN] * (p[VR_W_W] - m->w_w_prev) / h;
+        m->w_w_prev = p[VR_W_W];
+    }
 }
 
 void vm_outputs(vm_model *m)
 {
     double *v = m->v, ds[VM_NUM_STATES], f_resist, f_grade;
     const double *s = m->s;
-    rhs(v, v[VR_W_W], s, ds);
-    road_load(v, v[VR_R_DYN] * s[S_W_WHEEL], &f_resist, &f_grade);
-    v[VR_T_HS] = v[VR_K_HS] * s[S_TWIST] + v[VR_C_HS] * (v[VR_W_W] - s[S_W_WHEEL]);
-    v[VR_W_WHEEL] = s[S_W_WHEEL];
-    v[VR_V] = v[VR_R_DYN] * s[S_W_WHEEL];
-    v[VR_A] = v[VR_R_DYN] * ds[S_W_WHEEL];
+    double w = wheel_speed(v, s);
+    int own_inertia = !road_load_coupling(v);
+    rhs(v, s, ds);
+    road_load(v, v[VR_R_DYN] * w, &f_resist, &f_grade);
+    v[VR_T_HS] = flange_torque(v, s);
+    v[VR_W_WHEEL] = w;
+    v[VR_V] = v[VR_R_DYN] * w;
+    if (own_inertia) v[VR_A] = v[VR_R_DYN] * ds[S_W_WHEEL];
     v[VR_X] = s[S_X];
     v[VR_TWIST] = s[S_TWIST];
     v[VR_F_ROAD] = f_resist + f_grade;
     v[VR_P_IN] = v[VR_T_HS] * v[VR_W_W];
     v[VR_E_IN] = s[S_E_IN];
-    v[VR_E_KIN] = 0.5 * inertia(v) * s[S_W_WHEEL] * s[S_W_WHEEL];
+    v[VR_E_KIN] = own_inertia ? 0.5 * inertia(v) * w * w : 0.0;
     v[VR_E_SPRING] = 0.5 * v[VR_K_HS] * s[S_TWIST] * s[S_TWIST];
     v[VR_E_ROAD] = s[S_E_ROAD];
     v[VR_E_GRADE] = f_grade * s[S_X];
     v[VR_E_DAMPER] = s[S_E_DAMPER];
+    v[VR_E_BRAKE] = s[S_E_BRAKE];
 }
