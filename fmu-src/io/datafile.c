@@ -1,6 +1,6 @@
 /* Plain-text key/value data files: see datafile.h. */
 #define _POSIX_C_SOURCE 200809L /* open, fstat, fdopen, O_NONBLOCK, O_CLOEXEC */
-#include "datafile.h"
+#include "io/datafile.h"
 
 #include <ctype.h>
 #include <errno.h>
