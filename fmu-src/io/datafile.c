@@ -323,14 +323,15 @@ int hg_datafile_numbers(const hg_datafile *f, const char *key, size_t n_min, siz
     return 0;
 }
 
-int hg_datafile_number(const hg_datafile *f, const char *key, double lo, double hi, double *val,
-                       char *err, size_t errlen)
+int hg_datafile_number(const hg_datafile *f, const char *key, double lo, double hi,
+                       const char *unit, double *val, char *err, size_t errlen)
 {
     double v;
+    const char *sep = *unit ? " " : "";
     if (hg_datafile_numbers(f, key, 1, 1, &v, NULL, err, errlen)) return -1;
     if (!(v >= lo && v <= hi)) {
-        hg_errorf(err, errlen, "%s, line %d: key '%s' = %g is outside [%g, %g]", f->path,
-             find(f, key)->line, key, v, lo, hi);
+        hg_errorf(err, errlen, "%s, line %d: key '%s' = %g%s%s is outside [%g, %g]%s%s", f->path,
+             find(f, key)->line, key, v, sep, unit, lo, hi, sep, unit);
         return -1;
     }
     *val = v;

@@ -33,9 +33,10 @@ int hg_datafile_count(const hg_datafile *f, const char *key);
 int hg_datafile_numbers(const hg_datafile *f, const char *key, size_t n_min, size_t n_max,
                         double *vals, size_t *n, char *err, size_t errlen);
 
-/* One finite number within [lo, hi]. */
-int hg_datafile_number(const hg_datafile *f, const char *key, double lo, double hi, double *val,
-                       char *err, size_t errlen);
+/* One finite number within [lo, hi]; `unit` ("" if none) is quoted with the value and the range
+ * when it is outside. */
+int hg_datafile_number(const hg_datafile *f, const char *key, double lo, double hi,
+                       const char *unit, double *val, char *err, size_t errlen);
 
 /* The rest of the line after `key`, whitespace-trimmed, copied into buf (truncated to buflen). */
 int hg_datafile_text(const hg_datafile *f, const char *key, char *buf, size_t buflen, char *err,

@@ -36,7 +36,7 @@ static int read_series(const hg_datafile *f, const char *name, hg_series *y, cha
 static int read_teeth(const hg_datafile *f, const char *key, int *N, char *err, size_t errlen)
 {
     double v;
-    if (hg_datafile_number(f, key, 3, 200, &v, err, errlen)) return -1;
+    if (hg_datafile_number(f, key, 3, 200, "", &v, err, errlen)) return -1;
     if (v != floor(v)) {
         hg_errorf(err, errlen, "key '%s' = %g is not a whole number of teeth", key, v);
         return -1;

@@ -94,22 +94,22 @@ int hg_lubricant_load(const char *path, hg_lubricant *out, char *err, size_t err
         hg_errorf(err, errlen, "%s: key 'name' needs a text value", path);
         goto done;
     }
-    if (hg_datafile_number(f, "vogel_a", A_LO, A_HI, &l.vogel_a, err, errlen) ||
-        hg_datafile_number(f, "vogel_b", B_LO, B_HI, &l.vogel_b, err, errlen) ||
-        hg_datafile_number(f, "vogel_c", C_LO, C_HI, &l.vogel_c, err, errlen))
+    if (hg_datafile_number(f, "vogel_a", A_LO, A_HI, "Pa s", &l.vogel_a, err, errlen) ||
+        hg_datafile_number(f, "vogel_b", B_LO, B_HI, "K", &l.vogel_b, err, errlen) ||
+        hg_datafile_number(f, "vogel_c", C_LO, C_HI, "K", &l.vogel_c, err, errlen))
         goto done;
     for (i = 0; i < 3; i++) {
         snprintf(key, sizeof key, "alpha_star_T%d", i + 1);
-        if (hg_datafile_number(f, key, T_LO, T_HI, &l.alpha_T[i], err, errlen)) goto done;
+        if (hg_datafile_number(f, key, T_LO, T_HI, "K", &l.alpha_T[i], err, errlen)) goto done;
         snprintf(key, sizeof key, "alpha_star_%d", i + 1);
-        if (hg_datafile_number(f, key, AL_LO, AL_HI, &l.alpha_star[i], err, errlen)) goto done;
+        if (hg_datafile_number(f, key, AL_LO, AL_HI, "1/Pa", &l.alpha_star[i], err, errlen)) goto done;
     }
-    if (hg_datafile_number(f, "hn_lambda", LAM_LO, LAM_HI, &l.hn_lambda, err, errlen) ||
-        hg_datafile_number(f, "hn_alpha", HNA_LO, HNA_HI, &l.hn_alpha, err, errlen) ||
-        hg_datafile_number(f, "hn_beta", HNB_LO, HNB_HI, &l.hn_beta, err, errlen) ||
-        hg_datafile_number(f, "k_f", KF_LO, KF_HI, &l.k_f, err, errlen) ||
-        hg_datafile_number(f, "c_p", CP_LO, CP_HI, &l.c_p_f, err, errlen) ||
-        hg_datafile_number(f, "rho_15", RHO_LO, RHO_HI, &l.rho_15, err, errlen))
+    if (hg_datafile_number(f, "hn_lambda", LAM_LO, LAM_HI, "s", &l.hn_lambda, err, errlen) ||
+        hg_datafile_number(f, "hn_alpha", HNA_LO, HNA_HI, "", &l.hn_alpha, err, errlen) ||
+        hg_datafile_number(f, "hn_beta", HNB_LO, HNB_HI, "", &l.hn_beta, err, errlen) ||
+        hg_datafile_number(f, "k_f", KF_LO, KF_HI, "W/(m K)", &l.k_f, err, errlen) ||
+        hg_datafile_number(f, "c_p", CP_LO, CP_HI, "J/(kg K)", &l.c_p_f, err, errlen) ||
+        hg_datafile_number(f, "rho_15", RHO_LO, RHO_HI, "kg/m^3", &l.rho_15, err, errlen))
         goto done;
     if (cross_check(&l, path, err, errlen)) goto done;
     if (hg_datafile_check_all_used(f, err, errlen)) goto done;

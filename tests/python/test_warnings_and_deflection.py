@@ -4,6 +4,7 @@ output beside the DTE (which keeps the paper's definition, half backlash include
 
 import json
 import math
+import pathlib
 
 import numpy as np
 import pytest
@@ -114,3 +115,16 @@ def test_hypoid_run_shows_the_warnings(tmp_path, fmu_path, capsys):
     assert "hypoid run: FMU warning: w_set = 1500 rad/s (14324 rpm)" in err
     (summary,) = tmp_path.glob("*/summary.json")
     assert "w_set = 1500 rad/s" in " ".join(json.loads(summary.read_text())["fmu_warnings"])
+
+
+def test_data_file_range_messages_carry_units(harness, tmp_path):
+    """A lubricant file's value out of range: the message gives the file's unit with the value
+    and the range (the files are SI, docs/data-files.md)."""
+    oil = pathlib.Path(__file__).resolve().parents[2] / "resources" / "lubricants" / "OS265962.txt"
+    bad = tmp_path / "bad.txt"
+    bad.write_text(oil.read_text().replace("\nk_f 0.18", "\nk_f 50"))
+    h = harness()
+    with pytest.raises(FmuError):
+        h.init(lubricant_file=str(bad))
+    assert any("key 'k_f' = 50 W/(m K) is outside [0.01, 10] W/(m K)" in m[2]
+               for m in h.errors()), h.errors()
