@@ -102,7 +102,8 @@ int hg_lubricant_load(const char *path, hg_lubricant *out, char *err, size_t err
         snprintf(key, sizeof key, "alpha_star_T%d", i + 1);
         if (hg_datafile_number(f, key, T_LO, T_HI, "K", &l.alpha_T[i], err, errlen)) goto done;
         snprintf(key, sizeof key, "alpha_star_%d", i + 1);
-        if (hg_datafile_number(f, key, AL_LO, AL_HI, "1/Pa", &l.alpha_star[i], err, errlen)) goto done;
+        if (hg_datafile_number(f, key, AL_LO, AL_HI, "1/Pa", &l.alpha_star[i], err, errlen))
+            goto done;
     }
     if (hg_datafile_number(f, "hn_lambda", LAM_LO, LAM_HI, "s", &l.hn_lambda, err, errlen) ||
         hg_datafile_number(f, "hn_alpha", HNA_LO, HNA_HI, "", &l.hn_alpha, err, errlen) ||
