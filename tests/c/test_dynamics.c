@@ -35,6 +35,20 @@ static hg_dyn_params params(int mesh)
     return p;
 }
 
+/* The inputs: pinion and wheel torques [N m], governor set-point [rad/s]; the bath at 40 degC
+ * and every other input at its start value. */
+static hg_inputs inputs(double T_s, double T_w, double w_set)
+{
+    hg_inputs u;
+    int k;
+    for (k = 0; k < HG_NUM_INPUTS; k++) *hg_input(&u, k) = hg_var_table[hg_input_vr[k]].start;
+    u.T_s = T_s;
+    u.T_w = T_w;
+    u.T_bath = 313.15;
+    u.w_set = w_set;
+    return u;
+}
+
 static void evaluate(const hg_dyn_params *p, const hg_inputs *u, const double *y, double *ydot,
                      hg_dyn_eval *ev)
 {
@@ -48,7 +62,7 @@ static void evaluate(const hg_dyn_params *p, const hg_inputs *u, const double *y
 static void test_static_equilibrium(void)
 {
     hg_dyn_params p = params(HG_MESH_MODEL_MEAN);
-    hg_inputs u = {100.0, 100.0 * N_G / N_P, 313.15, 0.0};
+    hg_inputs u = inputs(100.0, 100.0 * N_G / N_P, 0.0);
     double y[HG_NY] = {0}, ydot[HG_NY], w = 200.0;
     hg_dyn_eval ev;
     p.c_t1 = 40.0, p.c_m = 2.0e3, p.c_t2 = 300.0; /* dampers see no relative motion */
@@ -76,7 +90,7 @@ static void test_static_equilibrium(void)
 static void test_known_twist(void)
 {
     hg_dyn_params p = params(HG_MESH_MODEL_MEAN);
-    hg_inputs u = {0.0, 0.0, 313.15, 0.0};
+    hg_inputs u = inputs(0.0, 0.0, 0.0);
     double y[HG_NY] = {0}, ydot[HG_NY];
     hg_dyn_eval ev;
     p.c_t1 = 50.0;
@@ -104,7 +118,7 @@ static void test_known_twist(void)
 static void test_rigid_mesh(void)
 {
     hg_dyn_params p = params(HG_MESH_MODEL_RIGID);
-    hg_inputs u = {0.0, 0.0, 313.15, 0.0};
+    hg_inputs u = inputs(0.0, 0.0, 0.0);
     double y[HG_NY] = {0}, ydot[HG_NY], i = N_G / N_P, J = 1.4e-2 + 0.29 / (i * i), acc;
     hg_dyn_eval ev;
     y[HG_Y_TWIST1] = 1e-3;  /* T_1 = 800 N m */
@@ -121,7 +135,7 @@ static void test_rigid_mesh(void)
 static void test_governor(void)
 {
     hg_dyn_params p = params(HG_MESH_MODEL_MEAN);
-    hg_inputs u = {120.0, 0.0, 313.15, 210.0};
+    hg_inputs u = inputs(120.0, 0.0, 210.0);
     double y[HG_NY] = {0}, ydot[HG_NY], i = N_G / N_P;
     hg_dyn_eval ev;
     p.speed_governor = 1, p.K_p = 30.0, p.K_i = 900.0;
@@ -146,7 +160,7 @@ static double stored(const hg_dyn_params *p, const hg_inputs *u, const double *y
 static void test_power_balance(int mesh)
 {
     hg_dyn_params p = params(mesh);
-    hg_inputs u = {150.0, 300.0, 313.15, 0.0};
+    hg_inputs u = inputs(150.0, 300.0, 0.0);
     double y[HG_NY] = {0}, ydot[HG_NY], yp[HG_NY], ym[HG_NY], dt = 1e-7, dE, P;
     hg_dyn_eval ev;
     int k;
