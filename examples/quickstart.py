@@ -6,6 +6,9 @@
 # `examples/quickstart.ipynb` and the plain script `examples/quickstart.py`
 # (`.venv/bin/python examples/quickstart.py`, figures in `quickstart-out/`) are the same code:
 # `examples/make_notebook.py` makes the notebook from the script, and the tests execute both.
+# To work in the notebook, open it in any Jupyter front end with the project's environment as
+# the kernel (the test extras bring the kernel, `ipykernel`; a front end such as JupyterLab or
+# VS Code is the user's choice and not pinned here).
 #
 # The FMU is reached through `hypoid.instance.Instance`, the `hypoid` package's access layer
 # (over fmpy): values by name, enumerations by item name (`load_mode="speed"`), `speed_rpm` for
