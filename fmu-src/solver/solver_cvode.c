@@ -159,16 +159,18 @@ static void *create(int n, int n_roots, hg_rhs_fn f, hg_root_fn g, void *user,
     return s;
 }
 
+/* The frees' return codes are dropped on purpose: nothing can be done about them here, and each
+ * only fails for a NULL argument, which the checks exclude. */
 static void destroy(void *impl)
 {
     cvode_solver *s = impl;
     if (!s) return;
     if (s->cvode) CVodeFree(&s->cvode);
-    if (s->LS) SUNLinSolFree(s->LS);
+    if (s->LS) (void)SUNLinSolFree(s->LS);
     if (s->A) SUNMatDestroy(s->A);
     if (s->y) N_VDestroy(s->y);
     if (s->atol) N_VDestroy(s->atol);
-    if (s->ctx) SUNContext_Free(&s->ctx);
+    if (s->ctx) (void)SUNContext_Free(&s->ctx);
     free(s->root_info);
     free(s);
 }
