@@ -86,27 +86,35 @@ def parse_vary(items, table=TABLE):
     out = {}
     for name, text in assignments(items, "--vary").items():
         try:
-            out[name] = [table.parse(name, v) for v in value_list(name, text)]
+            out[name] = [table.parse(name, v) for v in value_list(f"--vary {name}", text)]
         except BadValue as e:
             raise UsageError(f"--vary {e}") from None
     return out
 
 
-def value_list(name, text):
-    """'1000:5000:250' (inclusive range, numbers) or 'a,b,c' (a list of texts)."""
+def value_list(label, text):
+    """'1000:5000:250' (inclusive range, numbers) or 'a,b,c' (a list of texts); `label` names
+    the option in messages ('--vary speed_rpm')."""
     if ":" not in text:
         return [v.strip() for v in text.split(",")]
-    parts = text.split(":")
     try:
-        a, b, step = (float(x) for x in parts)
+        a, b, step = (float(x) for x in text.split(":"))
     except ValueError:
-        raise UsageError(f"--vary {name}={text}: a range is start:stop:step with three numbers "
-                         f"(e.g. {name}=1000:5000:250), or give a list v1,v2,...") from None
+        raise UsageError(f"{label}={text}: a range is start:stop:step with three numbers "
+                         "(e.g. 1000:5000:250), or give a list v1,v2,...") from None
     if step <= 0 or b < a:
-        raise UsageError(f"--vary {name}={text}: a range needs start <= stop and step > 0")
+        raise UsageError(f"{label}={text}: a range needs start <= stop and step > 0")
     n = int(np.floor((b - a) / step + 1e-9)) + 1
-    return [_tidy(a + i * step) for i in range(n)]
+    return [tidy(a + i * step) for i in range(n)]
 
 
-def _tidy(x):
+def numbers(label, text):
+    """A list of numbers in value_list's forms."""
+    try:
+        return [tidy(float(v)) for v in value_list(label, text)]
+    except ValueError:
+        raise UsageError(f"{label}={text}: numbers expected") from None
+
+
+def tidy(x):
     return int(x) if float(x).is_integer() else round(x, 10)

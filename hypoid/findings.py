@@ -2,16 +2,12 @@
 verdict each. Used by the report and by tests/python/test_paper_findings.py (same functions, a
 smaller grid). Efficiency is eta_rms, the RMS over 50 mesh cycles of steady state."""
 
-import pathlib
-
 import numpy as np
 import pandas as pd
 
-BUILTIN_LUBRICANTS = {1: "OS265962", 2: "OS265963"}
-# the reference conditions of the paper's figures (other columns at the FMU's start values)
-# (every parameter a study varies besides gear set, lubricant, torque and speed belongs here)
-REFERENCE = {"T_bath": 313.15, "friction_model": "ehl_thermal", "mesh_model": "varying",
-             "k_f": 0.0, "roelands_z": "simple", "e_0_scale": 1.0, "k_m_scale": 1.0}
+from hypoid.tables import (BUILTIN_LUBRICANTS, REFERENCE, calibration_probes, curve,  # noqa: F401
+                           prepare, resonances, select)
+
 DIP_MIN = 2e-4  # an efficiency dip counts when 0.02 percentage points below the trend
 FADE = 0.35  # ... and has faded when below this fraction of the low-torque dips
 EDGE_RPM = 200.0  # the trend is the chord between the grid speeds this far from the resonance
@@ -20,59 +16,6 @@ BRANCH_MIN_UM = 3.0  # up and down DTE peak-to-peak differ by this much: two bra
 
 
 # ---------------------------------------------------------------------------- selection
-def prepare(df):
-    """Status-ok rows, empty strings for missing file names, a lubricant label column."""
-    if df is None or df.empty:
-        return pd.DataFrame()
-    df = df[df["status"] == "ok"].copy()
-    if "lubricant_file" in df:
-        df["lubricant_file"] = df["lubricant_file"].fillna("").astype(str)
-    df["lubricant_name"] = [lubricant_label(r) for r in df.itertuples()]
-    return df
-
-
-def lubricant_label(row):
-    path = getattr(row, "lubricant_file", "") or ""
-    if path:
-        name = _file_name(path)
-    else:
-        name = BUILTIN_LUBRICANTS.get(int(row.lubricant), f"lubricant {row.lubricant}")
-    k_f = getattr(row, "k_f", 0.0)
-    return f"{name}, k_f {k_f:g}" if k_f and np.isfinite(k_f) else name
-
-
-def _file_name(path):
-    p = pathlib.Path(path)
-    try:
-        for line in p.read_text().splitlines():
-            if line.startswith("name "):
-                return line[5:].strip()
-    except OSError:
-        pass
-    return p.stem
-
-
-def select(df, **eq):
-    """Rows at the reference conditions with the given column values (floats to 1e-9)."""
-    if df.empty:
-        return df
-    mask = np.ones(len(df), bool)
-    for col, val in {**REFERENCE, **eq}.items():
-        if col not in df:
-            continue
-        if isinstance(val, str):
-            mask &= df[col].astype(str).to_numpy() == val
-        else:
-            mask &= np.isclose(df[col].to_numpy(float), float(val), rtol=0, atol=1e-9)
-    return df[mask]
-
-
-def curve(df, y="eta_rms", **eq):
-    """Series y by speed_rpm (mean of duplicates)."""
-    sel = select(df, **eq)
-    return sel.groupby("speed_rpm")[y].mean().sort_index()
-
-
 def reference_lubricants(df, torque=100.0):
     """eta_rms by speed for OS265962, OS265963 and the swapped-alpha* variant (gear set 1)."""
     base = dict(gear_set=1, T_s=torque)
@@ -84,12 +27,10 @@ def reference_lubricants(df, torque=100.0):
     return one, two, swap
 
 
-def resonances(df, gear_set):
-    """{'f2': rpm, 'f3': rpm} of a gear set (from the calculated parameters in the table)."""
-    sel = df[df["gear_set"] == gear_set]
-    if sel.empty:
-        return {}
-    return {"f2": float(sel["n_f2_rpm"].iloc[0]), "f3": float(sel["n_f3_rpm"].iloc[0])}
+def speed_range(speeds):
+    """'1150 rpm' for one speed, '1150-1200 rpm' for several."""
+    lo, hi = min(speeds), max(speeds)
+    return f"{lo:g} rpm" if lo == hi else f"{lo:g}-{hi:g} rpm"
 
 
 # ---------------------------------------------------------------------------- measures
@@ -153,7 +94,7 @@ def lubricant_ranking(pts, torque=100.0):
     return _finding("F1", "6a", "OS265963 (higher alpha*) less efficient at every speed",
                     f"eta(OS265962) - eta(OS265963) = {100 * gap.min():.3f} to "
                     f"{100 * gap.max():.3f} %-points over {len(gap)} speeds "
-                    f"({gap.index.min():g}-{gap.index.max():g} rpm)", bool((gap > 0).all()),
+                    f"({speed_range(gap.index)})", bool((gap > 0).all()),
                     f"{torque:g} N.m")
 
 
@@ -198,7 +139,7 @@ def jump_finding(cont, torque, mode, pts, gear_set=1):
     if j is None:
         return _finding(f"F4-{mode}-{torque:g}", "9", text, "no data", None), None
     two = j["speeds_two_branches"]
-    band = f"{min(two):g}-{max(two):g} rpm" if two else "none"
+    band = speed_range(two) if two else "none"
     ok = bool(two) and j["min_DTE_min_minus_b_um"] < 0
     return _finding(f"F4-{mode}-{torque:g}", "9", text,
                     f"two branches: {band} (largest up/down gap {j['max_branch_gap_um']:.1f} um);"
@@ -242,8 +183,8 @@ def gear_set_dte(pts, torque=100.0, band=(1000.0, 2000.0)):
         return _finding("F8", "11b", text, "no data", None)
     share = float((d["2"] > d["3"]).mean())
     return _finding("F8", "11b", text,
-                    f"largest DTE p-p in {band[0]:g}-{band[1]:g} rpm: set 2 {d['2'].max():.1f} um "
-                    f"at {d['2'].idxmax():g} rpm, set 3 {d['3'].max():.1f} um at "
+                    f"largest DTE p-p in {speed_range(band)}: set 2 {d['2'].max():.1f} µm "
+                    f"at {d['2'].idxmax():g} rpm, set 3 {d['3'].max():.1f} µm at "
                     f"{d['3'].idxmax():g} rpm; set 2 larger at {100 * share:.0f} % of "
                     f"{len(d)} speeds", bool(d["2"].max() > d["3"].max() and share > 0.5),
                     f"{torque:g} N.m")
@@ -327,13 +268,6 @@ def all_findings(pts, cont, trace_dir=None):
             rows.append(resonance_load(pts, near, fid=f"F6-{mode}"))
     rows.append(regime_finding(pts, trace_dir))
     return pd.DataFrame([r for r in rows if r])
-
-
-def calibration_probes(pts):
-    """The e_0_scale values other than 1 in a table (the full study's calibration probe)."""
-    if "e_0_scale" not in pts:
-        return []
-    return sorted(v for v in pts["e_0_scale"].dropna().unique() if v != 1.0)
 
 
 def _nearest_speed(pts, n):

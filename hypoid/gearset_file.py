@@ -5,9 +5,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from hypoid.tca_fit import MAX_HARMONICS, Series
-
 MAGIC = "hypoid-gearset 1"
+MAX_HARMONICS = 32  # most harmonics a gear-set file may carry
 MESH_SERIES = ("k_m", "R_p", "e_0")  # argument ψ = θ (one mesh cycle)
 PAIR_SERIES = ("ls", "R_x", "R_y", "up_x", "up_y", "ug_x", "ug_y")  # ψ_k = (θ + 2π(k−1))/3
 CONTACT_SERIES = PAIR_SERIES[1:]  # undefined out of contact
@@ -15,6 +14,21 @@ UNITS = {"k_m": "N/m", "R_p": "m", "e_0": "m", "ls": "1", "R_x": "m", "R_y": "m"
          "up_x": "m/(rad/s) of pinion speed", "up_y": "m/(rad/s) of pinion speed",
          "ug_x": "m/(rad/s) of gear speed", "ug_y": "m/(rad/s) of gear speed"}
 PARTS = ("mean", "sin", "cos")
+
+
+@dataclass(frozen=True)
+class Series:
+    """A truncated Fourier series; coefficients in the unit of the quantity."""
+
+    mean: float
+    sin: np.ndarray
+    cos: np.ndarray
+
+    def __call__(self, psi):
+        psi = np.asarray(psi, dtype=float)
+        i = np.arange(1, len(self.sin) + 1)
+        arg = np.multiply.outer(psi, i)
+        return self.mean + np.sin(arg) @ self.sin + np.cos(arg) @ self.cos
 
 
 class GearsetFileError(ValueError):

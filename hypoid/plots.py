@@ -9,8 +9,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from hypoid import findings as fd  # noqa: E402
 from hypoid import regime, results  # noqa: E402
+from hypoid import tables as tb  # noqa: E402
 
 DPI = 120
 TORQUE_COLORS = {50.0: "tab:red", 100.0: "tab:blue", 200.0: "tab:green", 300.0: "tab:purple"}
@@ -28,7 +28,7 @@ def _save(fig, out, name):
 
 
 def _resonance_lines(ax, pts, gear_set=1, color="0.45", label=True, y=0.99):
-    for mode, n in fd.resonances(pts, gear_set).items():
+    for mode, n in tb.resonances(pts, gear_set).items():
         ax.axvline(n, color=color, ls=":", lw=1.2, zorder=0)
         if label:
             ax.text(n, y, f" mode {mode[1]}\n {n:.0f} rpm", transform=ax.get_xaxis_transform(),
@@ -40,16 +40,9 @@ def _eta_axis(ax):
     ax.grid(True, alpha=0.3)
 
 
-def _loss_markers(ax, sel, y):
-    lost = sel[sel["contact_loss_fraction"] > 0]
-    if len(lost):
-        ax.plot(lost["speed_rpm"], y(lost), "o", mfc="none", mec="k", ms=9, mew=1.2,
-                label="contact lost", zorder=5)
-
-
 def fig8_torque(pts, out, name="fig8_efficiency_torque", note="", **where):
     """Efficiency and DTE peak-to-peak vs pinion speed per input torque (paper Fig. 8)."""
-    base = fd.select(pts, gear_set=1, lubricant=1, lubricant_file="", **where)
+    base = tb.select(pts, gear_set=1, lubricant=1, lubricant_file="", **where)
     if base.empty:
         return None
     fig, ax = plt.subplots(2, 1, figsize=(9, 8.5), sharex=True,
@@ -58,8 +51,8 @@ def fig8_torque(pts, out, name="fig8_efficiency_torque", note="", **where):
         sel = sel.sort_values("speed_rpm")
         c = TORQUE_COLORS.get(t)
         ax[0].plot(sel["speed_rpm"], 100 * sel["eta_rms"], "-o", ms=3.5, color=c,
-                   label=f"{t:g} N.m")
-        ax[1].plot(sel["speed_rpm"], sel["DTE_pp_um"], "-o", ms=3.5, color=c, label=f"{t:g} N.m")
+                   label=f"{t:g} N·m")
+        ax[1].plot(sel["speed_rpm"], sel["DTE_pp_um"], "-o", ms=3.5, color=c, label=f"{t:g} N·m")
     lost = base[base["contact_loss_fraction"] > 0]
     if len(lost):
         ax[0].plot(lost["speed_rpm"], 100 * lost["eta_rms"], "o", mfc="none", mec="k", ms=9,
@@ -70,15 +63,15 @@ def fig8_torque(pts, out, name="fig8_efficiency_torque", note="", **where):
         a.grid(True, alpha=0.3)
     _eta_axis(ax[0])
     ax[0].legend(title="input torque T_s", ncol=5, fontsize=8, loc="lower right")
-    ax[0].set_title("Efficiency vs pinion speed, OS265962, 40 degC, gear set 1 (paper Fig. 8)"
+    ax[0].set_title("Efficiency vs pinion speed, OS265962, 40 °C, gear set 1 (paper Fig. 8)"
                     + (f"\n{note}" if note else ""))
-    ax[1].set_ylabel("DTE peak-to-peak [um]")
+    ax[1].set_ylabel("DTE peak-to-peak [µm]")
     ax[1].set_xlabel("pinion speed [rpm]")
     return _save(fig, out, name)
 
 
 def _lub_curves(pts, torque=100.0):
-    sel = fd.select(pts, gear_set=1, T_s=torque)
+    sel = tb.select(pts, gear_set=1, T_s=torque)
     return {name: g.sort_values("speed_rpm") for name, g in sel.groupby("lubricant_name")}
 
 
@@ -95,7 +88,7 @@ def fig6_lubricants(pts, out, torque=100.0):
     _eta_axis(ax)
     ax.set_xlabel("pinion speed [rpm]")
     ax.legend(loc="lower right")
-    ax.set_title(f"Efficiency per lubricant, T_s = {torque:g} N.m, 40 degC, gear set 1 "
+    ax.set_title(f"Efficiency per lubricant, T_s = {torque:g} N·m, 40 °C, gear set 1 "
                  "(paper Fig. 6a)")
     return _save(fig, out, "fig6a_efficiency_lubricants")
 
@@ -120,7 +113,7 @@ def fig7_swapped(pts, out, torque=100.0):
         a.grid(True, alpha=0.3)
     _eta_axis(ax[0])
     ax[0].legend(loc="lower right")
-    ax[0].set_title(f"Common pressure-viscosity response, T_s = {torque:g} N.m, 40 degC "
+    ax[0].set_title(f"Common pressure-viscosity response, T_s = {torque:g} N·m, 40 °C "
                     "(paper Fig. 7)")
     ax[1].set_ylabel("$\\eta - \\eta_{OS265962}$ [%-points]")
     ax[1].set_xlabel("pinion speed [rpm]")
@@ -130,7 +123,7 @@ def fig7_swapped(pts, out, torque=100.0):
 def fig9_jump(cont, pts, out):
     """DTE peak response (max and min) on the up and down branches with the half backlash
     (paper Fig. 9), one panel per torque."""
-    sel = fd.select(cont, gear_set=1)
+    sel = tb.select(cont, gear_set=1)
     if sel.empty:
         return None
     torques = sorted(sel["T_s"].unique())
@@ -145,18 +138,18 @@ def fig9_jump(cont, pts, out):
             ax.plot(b["speed_rpm"], b["DTE_min_um"], style, marker=mk, ms=4, color="tab:red",
                     label=f"min DTE, speed {branch}")
         b_um = float(g["b_um"].iloc[0])
-        ax.axhline(b_um, color="k", lw=1.2, label=f"half backlash b = {b_um:g} um")
+        ax.axhline(b_um, color="k", lw=1.2, label=f"half backlash b = {b_um:g} µm")
         lost = g[g["contact_loss_fraction"] > 0]
         ax.plot(lost["speed_rpm"], lost["DTE_min_um"], "o", mfc="none", mec="k", ms=9,
                 label="contact lost")
         _resonance_lines(ax, pts)
-        ax.set_ylabel("DTE [um]")
+        ax.set_ylabel("DTE [µm]")
         ax.grid(True, alpha=0.3)
-        ax.set_title(f"T_s = {t:g} N.m: speed swept up then down (continuation)", fontsize=10)
+        ax.set_title(f"T_s = {t:g} N·m: speed swept up then down (continuation)", fontsize=10)
         if i == 0:
             ax.legend(fontsize=7, ncol=2, loc="upper right")
     axes[-1, 0].set_xlabel("pinion speed [rpm]")
-    fig.suptitle("DTE peak response, OS265962, 40 degC, gear set 1 (paper Fig. 9)")
+    fig.suptitle("DTE peak response, OS265962, 40 °C, gear set 1 (paper Fig. 9)")
     fig.tight_layout(rect=(0, 0, 1, 0.98))
     return _save(fig, out, "fig9_dte_jump")
 
@@ -177,7 +170,7 @@ def engagement(trace, pair=1):
 def fig10_mesh_cycle(pts, out, torque=100.0):
     """Contact load and friction coefficient of one tooth pair over its engagement near and
     away from resonance (paper Fig. 10)."""
-    sel = fd.select(pts, gear_set=1, lubricant=1, lubricant_file="", T_s=torque)
+    sel = tb.select(pts, gear_set=1, lubricant=1, lubricant_file="", T_s=torque)
     if "trace" not in sel:
         return None
     sel = sel[sel["trace"].fillna("").astype(str) != ""].sort_values("speed_rpm")
@@ -195,22 +188,22 @@ def fig10_mesh_cycle(pts, out, torque=100.0):
         ax[0].plot(x, w / 1e3, color=c, label=lab)
         on = w > 1.0
         ax[1].plot(x, np.where(on, mu, 0.0), color=c,
-                   label=f"{row.speed_rpm:g} rpm, mean mu in contact "
-                         f"{np.mean(mu[on]) if on.any() else 0:.4f}")
+                   label=f"{row.speed_rpm:g} rpm, mu_mean {row.mu_mean:.4f} (load-weighted "
+                         "over all pairs and the window, as in the table)")
     ax[0].set_ylabel("tooth pair 1 contact load [kN]")
     ax[1].set_ylabel("tooth pair 1 friction coefficient [-]")
     ax[1].set_xlabel("engagement cycle of pair 1 [mesh cycles]")
     for a in ax:
         a.grid(True, alpha=0.3)
         a.legend(fontsize=8, loc="upper right")
-    ax[0].set_title(f"One tooth pair over its engagement, T_s = {torque:g} N.m, OS265962, "
+    ax[0].set_title(f"One tooth pair over its engagement, T_s = {torque:g} N·m, OS265962, "
                     "gear set 1 (paper Fig. 10)")
     return _save(fig, out, "fig10_mesh_cycle")
 
 
 def fig11_gear_sets(pts, out, torque=100.0):
     """Efficiency and DTE peak-to-peak of gear sets 2 and 3 (paper Fig. 11)."""
-    sel = fd.select(pts, lubricant=1, lubricant_file="", T_s=torque)
+    sel = tb.select(pts, lubricant=1, lubricant_file="", T_s=torque)
     sel = sel[sel["gear_set"].isin([2, 3])]
     if sel["gear_set"].nunique() < 2:
         return None
@@ -227,9 +220,9 @@ def fig11_gear_sets(pts, out, torque=100.0):
     ax[0].legend(loc="lower right")
     ax[1].legend(loc="upper right")
     ax[1].grid(True, alpha=0.3)
-    ax[1].set_ylabel("DTE peak-to-peak [um]")
+    ax[1].set_ylabel("DTE peak-to-peak [µm]")
     ax[1].set_xlabel("pinion speed [rpm]")
-    ax[0].set_title(f"Gear sets 2 and 3, T_s = {torque:g} N.m, OS265962, 40 degC "
+    ax[0].set_title(f"Gear sets 2 and 3, T_s = {torque:g} N·m, OS265962, 40 °C "
                     "(paper Fig. 11)")
     return _save(fig, out, "fig11_gear_sets")
 
@@ -237,7 +230,7 @@ def fig11_gear_sets(pts, out, torque=100.0):
 def fig5_regime(pts, out, speed=1000.0, cycles=2):
     """Lubrication regime map: g_V against g_E of every pair in contact over two mesh cycles,
     one cloud per torque, on the Hamrock-Dowson regions (paper Fig. 5; docs/physics.md §7)."""
-    sel = fd.select(pts, gear_set=1, lubricant=1, lubricant_file="", speed_rpm=speed)
+    sel = tb.select(pts, gear_set=1, lubricant=1, lubricant_file="", speed_rpm=speed)
     if "trace" not in sel:
         return None
     sel = sel[sel["trace"].fillna("").astype(str) != ""].sort_values("T_s")
@@ -269,7 +262,7 @@ def fig5_regime(pts, out, speed=1000.0, cycles=2):
                     bbox={"fc": "white", "ec": "0.7", "alpha": 0.8})
     for t, c in clouds:
         ax.scatter(c["g_E"], c["g_V"], s=8, color=TORQUE_COLORS.get(t), alpha=0.7,
-                   label=f"{t:g} N.m")
+                   label=f"{t:g} N·m")
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("elasticity parameter $g_E = W^{8/3}/U^2$")
@@ -280,10 +273,22 @@ def fig5_regime(pts, out, speed=1000.0, cycles=2):
     return _save(fig, out, "fig5_regime_map")
 
 
+LEGEND_UNITS = {"T_s": ("N·m", 1.0, 0.0), "T_bath": ("°C", 1.0, -273.15),
+                "k_f": ("W/(m·K)", 1.0, 0.0)}
+
+
+def _with_unit(name, value):
+    """'T_s = 100 N·m', 'T_bath = 40 °C' for legends; names without a unit as they are."""
+    if name in LEGEND_UNITS and isinstance(value, (int, float, np.number)):
+        unit, factor, offset = LEGEND_UNITS[name]
+        return f"{name} = {factor * value + offset:g} {unit}"
+    return f"{name} = {value}"
+
+
 def quick_look(df, out, continuation=False):
     """Efficiency and DTE p-p vs speed, one line per combination of the other varied columns
     (the `hypoid sweep` plot)."""
-    df = fd.prepare(df)
+    df = tb.prepare(df)
     if df.empty or "speed_rpm" not in df:
         return []
     params = [c for c in ("gear_set", "lubricant_name", "friction_model", "mesh_model", "T_bath",
@@ -292,7 +297,7 @@ def quick_look(df, out, continuation=False):
     fig, ax = plt.subplots(2, 1, figsize=(9, 8), sharex=True)
     for (key, g), c in zip(groups, plt.cm.tab10.colors * 10):
         key = key if isinstance(key, tuple) else (key,)
-        label = ", ".join(f"{p}={v}" for p, v in zip(params, key)) or "all"
+        label = ", ".join(_with_unit(p, v) for p, v in zip(params, key)) or "all"
         branches = g.groupby("branch") if continuation else [("", g)]
         for br, b in branches:
             b = b.sort_values("speed_rpm")
@@ -303,7 +308,7 @@ def quick_look(df, out, continuation=False):
             ax[1].plot(b["speed_rpm"], b["DTE_pp_um"], st, marker="o", ms=3, color=c)
     _eta_axis(ax[0])
     ax[0].legend(fontsize=7, loc="lower right")
-    ax[1].set_ylabel("DTE peak-to-peak [um]")
+    ax[1].set_ylabel("DTE peak-to-peak [µm]")
     ax[1].set_xlabel("pinion speed [rpm]")
     ax[1].grid(True, alpha=0.3)
     return [_save(fig, out, "sweep")]
@@ -321,7 +326,7 @@ def all_figures(pts, cont, out):
         "fig10": fig10_mesh_cycle(pts, out),
         "fig11": fig11_gear_sets(pts, out),
     }
-    for e0 in fd.calibration_probes(pts):
+    for e0 in tb.calibration_probes(pts):
         made[f"fig8-e0x{e0:g}"] = fig8_torque(
             pts, out, f"fig8_efficiency_torque_e0x{e0:g}",
             f"calibration probe: transmission error e_0 x {e0:g} (e_0_scale)", e_0_scale=e0)

@@ -154,6 +154,19 @@ def run(name, out, fmu_path, scheduler=None, workers=2):
     return pts, cont, info
 
 
+def write_report(out, pts, cont, info):
+    """Results -> figures, findings and modal tables -> report.md (each by its own module)."""
+    from hypoid import findings, plots, report, tables
+
+    ok_pts, ok_cont = tables.prepare(pts), tables.prepare(cont)
+    figs = plots.all_figures(ok_pts, ok_cont, out / "figures")
+    find = findings.all_findings(pts, cont, out / "traces")
+    find.to_csv(out / "findings.csv", index=False)
+    modal = tables.modal_table(ok_pts)
+    modal.to_csv(out / "modal.csv", index=False)
+    return report.write(out, pts, cont, info, figs, find, modal)
+
+
 def main(argv):
     ap = cliargs.Parser("hypoid study", __doc__)
     ap.add_argument("name", choices=sorted(SPECS), nargs="?", default="default")
@@ -170,9 +183,7 @@ def main(argv):
     info["cpu_s_total"] = cpu
     (out / "study.json").write_text(json.dumps(info, indent=2) + "\n")
     if not args.no_report:
-        from hypoid import report
-
-        path = report.write(out, pts, cont, info)
+        path = write_report(out, pts, cont, info)
         print(f"hypoid study: report {path}")
     bad = int((pts["status"] != "ok").sum()) + (int((cont["status"] != "ok").sum())
                                                 if len(cont) else 0)
