@@ -363,3 +363,18 @@ int hg_datafile_check_all_used(const hg_datafile *f, char *err, size_t errlen)
     }
     return 0;
 }
+
+int hg_datafile_hash(const char *path, char hex[HG_HASH_HEX], char *err, size_t errlen)
+{
+    unsigned long long h = 0xcbf29ce484222325ULL; /* FNV-1a 64: offset basis and prime */
+    long size = 0, i;
+    char *text = read_whole_file(path, &size, err, errlen);
+    if (!text) return -1;
+    for (i = 0; i < size; i++) {
+        if (text[i] == '\r') continue;
+        h = (h ^ (unsigned char)text[i]) * 0x100000001b3ULL;
+    }
+    free(text);
+    snprintf(hex, HG_HASH_HEX, "%016llx", h);
+    return 0;
+}

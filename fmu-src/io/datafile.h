@@ -45,4 +45,10 @@ int hg_datafile_text(const hg_datafile *f, const char *key, char *buf, size_t bu
 /* Fails, naming the first one, when a key was never read: catches misspelt keys in user files. */
 int hg_datafile_check_all_used(const hg_datafile *f, char *err, size_t errlen);
 
+/* Content hash of a data file: FNV-1a 64 of its bytes with carriage returns left out (a CRLF
+ * checkout hashes like an LF one), as 16 lower-case hex digits in hex[HG_HASH_HEX]. What
+ * `hypoid effmap` records of the gear set and lubricant a map was made from. */
+#define HG_HASH_HEX 17
+int hg_datafile_hash(const char *path, char hex[HG_HASH_HEX], char *err, size_t errlen);
+
 #endif

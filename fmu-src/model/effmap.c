@@ -24,6 +24,25 @@ static int read_axis(const hg_datafile *f, const char *path, const char *key, do
     return 0;
 }
 
+static int read_source(const hg_datafile *f, const char *path, const char *what,
+                       hg_effmap_source *src, char *err, size_t errlen)
+{
+    char key[32];
+    size_t i;
+    snprintf(key, sizeof key, "%s_source", what);
+    if (hg_datafile_text(f, key, src->source, sizeof src->source, err, errlen)) return -1;
+    snprintf(key, sizeof key, "%s_hash", what);
+    if (hg_datafile_text(f, key, src->hash, sizeof src->hash, err, errlen)) return -1;
+    for (i = 0; i < HG_HASH_HEX - 1; i++)
+        if (!src->hash[i] || !strchr("0123456789abcdef", src->hash[i])) break;
+    if (i != HG_HASH_HEX - 1) {
+        snprintf(err, errlen, "%s: key '%s': expected 16 hex digits (the content hash `hypoid "
+                 "effmap` writes), got '%s'", path, key, src->hash);
+        return -1;
+    }
+    return 0;
+}
+
 static int read_table(const hg_datafile *f, const char *path, hg_effmap *map, char *err,
                       size_t errlen)
 {
@@ -93,11 +112,15 @@ static void spline_weights(const double *x, int n, const double *M, double at, d
 
 int hg_effmap_load(const char *path, hg_effmap *map, char *err, size_t errlen)
 {
-    hg_datafile *f = hg_datafile_load(path, "hypoid-effmap", 1, err, errlen);
+    hg_datafile *f = hg_datafile_load(path, "hypoid-effmap", 2, err, errlen);
     int rc = -1;
     if (!f) return -1;
     memset(map, 0, sizeof *map);
     if (hg_datafile_text(f, "name", map->name, sizeof map->name, err, errlen) ||
+        read_source(f, path, "gear_set", &map->gear_set, err, errlen) ||
+        read_source(f, path, "lubricant", &map->lubricant, err, errlen) ||
+        hg_datafile_text(f, "model_version", map->model_version, sizeof map->model_version, err,
+                         errlen) ||
         read_axis(f, path, "speeds", 0.0, map->w, &map->n_w, err, errlen) ||
         read_axis(f, path, "torques", 0.0, map->T, &map->n_T, err, errlen) ||
         read_axis(f, path, "temperatures", 1.0, map->K, &map->n_K, err, errlen))

@@ -2,6 +2,7 @@
 #include "model/setup.h"
 
 #include <stdio.h>
+#include <string.h>
 
 #include "io/errmsg.h"
 #include "model/modal.h"
@@ -27,11 +28,22 @@ static int resolve_path(const char *resource_dir, const char *user_file, const c
     return 0;
 }
 
+static void gearset_builtin(const hg_vars *v, char *builtin, size_t len)
+{
+    snprintf(builtin, len, "gearsets/gearset%d.txt", v->gear_set);
+}
+
+static const char *lubricant_builtin(const hg_vars *v)
+{
+    static const char *const builtin[] = {"lubricants/OS265962.txt", "lubricants/OS265963.txt"};
+    return builtin[v->lubricant == 2];
+}
+
 static int load_gearset(hg_setup *s, const char *resource_dir, const hg_vars *v, char *err,
                         size_t errlen)
 {
     char path[4096], builtin[64], why[HG_ERRLEN];
-    snprintf(builtin, sizeof builtin, "gearsets/gearset%d.txt", v->gear_set);
+    gearset_builtin(v, builtin, sizeof builtin);
     if (resolve_path(resource_dir, v->gear_set_file, builtin, path, sizeof path, err, errlen))
         return -1;
     if (hg_gearset_load(path, &s->gear, why, sizeof why)) {
@@ -47,8 +59,7 @@ static int load_gearset(hg_setup *s, const char *resource_dir, const hg_vars *v,
 static int load_lubricant(hg_setup *s, const char *resource_dir, const hg_vars *v, char *err,
                           size_t errlen)
 {
-    static const char *const builtin[] = {"lubricants/OS265962.txt", "lubricants/OS265963.txt"};
-    const char *name = builtin[v->lubricant == 2];
+    const char *name = lubricant_builtin(v);
     char path[4096], why[HG_ERRLEN];
     if (resolve_path(resource_dir, v->lubricant_file, name, path, sizeof path, err, errlen))
         return -1;
@@ -61,11 +72,30 @@ static int load_lubricant(hg_setup *s, const char *resource_dir, const hg_vars *
     return 0;
 }
 
+/* A map applies only to the data file it was made from: its recorded content hash must be the
+ * hash of the file in use (`var` = user_file, or the built-in file). */
+static int check_map_source(const hg_effmap_source *made, const char *what, const char *var,
+                            const char *resource_dir, const char *user_file, const char *builtin,
+                            const char *map_name, char *err, size_t errlen)
+{
+    char path[4096], hash[HG_HASH_HEX], why[HG_ERRLEN];
+    if (resolve_path(resource_dir, user_file, builtin, path, sizeof path, err, errlen)) return -1;
+    if (hg_datafile_hash(path, hash, why, sizeof why)) {
+        hg_errorf(err, errlen, "%s", why);
+        return -1;
+    }
+    if (strcmp(hash, made->hash) == 0) return 0;
+    hg_errorf(err, errlen, "%s was made for the %s '%s' (content hash %s), but this run uses %s = "
+              "'%s' (content hash %s): make a map for it with hypoid effmap", map_name, what,
+              made->source, made->hash, var, user_file[0] ? user_file : builtin, hash);
+    return -1;
+}
+
 /* The map level: a rigid gear whose efficiency comes from a map of the full model. */
 static int load_map(hg_setup *s, const char *resource_dir, const hg_vars *v, char *err,
                     size_t errlen)
 {
-    char path[4096], builtin[96], why[HG_ERRLEN];
+    char path[4096], builtin[96], gear[64], name[4200], why[HG_ERRLEN];
     hg_effmap_free(&s->map);
     s->p.map = NULL;
     if (v->friction_model != HG_FRICTION_MODEL_MAP) return 0;
@@ -84,10 +114,20 @@ static int load_map(hg_setup *s, const char *resource_dir, const hg_vars *v, cha
     if (resolve_path(resource_dir, v->efficiency_map_file, builtin, path, sizeof path, err,
                      errlen))
         return -1;
+    snprintf(name, sizeof name, "%s = '%s'",
+             v->efficiency_map_file[0] ? "efficiency_map_file" : "the built-in efficiency map",
+             v->efficiency_map_file[0] ? v->efficiency_map_file : builtin);
     if (hg_effmap_load(path, &s->map, why, sizeof why)) {
-        hg_errorf(err, errlen, "%s = '%s': %s",
-                  v->efficiency_map_file[0] ? "efficiency_map_file" : "built-in efficiency map",
-                  v->efficiency_map_file[0] ? v->efficiency_map_file : builtin, why);
+        hg_errorf(err, errlen, "%s: %s", name, why);
+        return -1;
+    }
+    gearset_builtin(v, gear, sizeof gear);
+    if (check_map_source(&s->map.gear_set, "gear set", v->gear_set_file[0] ? "gear_set_file"
+                         : "gear_set", resource_dir, v->gear_set_file, gear, name, err, errlen) ||
+        check_map_source(&s->map.lubricant, "lubricant", v->lubricant_file[0] ? "lubricant_file"
+                         : "lubricant", resource_dir, v->lubricant_file, lubricant_builtin(v),
+                         name, err, errlen)) {
+        hg_effmap_free(&s->map);
         return -1;
     }
     s->p.map = &s->map;

@@ -15,12 +15,16 @@ static const double W[] = {10, 50, 100, 300}, T[] = {10, 50, 100}, K[] = {300, 3
 static double linear(double w, double t, double k) { return 0.9 + 1e-4 * w + 2e-4 * t + 1e-4 * (k - 300); }
 static double wiggly(int d, int a, int b, int c) { return 0.95 + 0.01 * sin(1.0 + a + 2 * b + 3 * c + 5 * d); }
 
-/* Writes a 4 x 3 x 2 map of f; `extra` replaces the speeds line when not NULL. */
+static const char *gear_hash = "fedcba9876543210"; /* the recorded hash of the gear-set file */
+
+/* Writes a 4 x 3 x 2 map of f; `speeds` replaces the speeds line when not NULL. */
 static void write_map(double (*f)(int, int, int, int), const char *speeds)
 {
     FILE *fp = fopen(PATH, "w");
     int d, a, b, c;
-    fprintf(fp, "hypoid-effmap 1\nname test\n%s\ntorques 10 50 100\ntemperatures 300 350\n",
+    fprintf(fp, "hypoid-effmap 2\nname test\ngear_set_hash %s\ngear_set_source gearsets/x.txt\n"
+            "lubricant_hash 0123456789abcdef\nlubricant_source lubricants/y.txt\n"
+            "model_version 0.1.0\n%s\ntorques 10 50 100\ntemperatures 300 350\n", gear_hash,
             speeds ? speeds : "speeds 10 50 100 300");
     for (d = 0; d < 2; d++)
         for (c = 0; c < 2; c++) {
@@ -77,9 +81,48 @@ static void expect_error(const char *speeds, double (*f)(int, int, int, int), co
 
 static double too_high(int d, int a, int b, int c) { return d == 1 && a == 2 && b == 1 && c == 0 ? 1.2 : 0.98; }
 
+/* What the map records of its sources is read back as written. */
+static void provenance(void)
+{
+    hg_effmap m;
+    char err[HG_ERRLEN] = "";
+    write_map(wiggly, NULL);
+    CHECK(hg_effmap_load(PATH, &m, err, sizeof err) == 0);
+    CHECK(strcmp(m.gear_set.hash, "fedcba9876543210") == 0);
+    CHECK(strcmp(m.gear_set.source, "gearsets/x.txt") == 0);
+    CHECK(strcmp(m.lubricant.hash, "0123456789abcdef") == 0);
+    CHECK(strcmp(m.model_version, "0.1.0") == 0);
+    hg_effmap_free(&m);
+    gear_hash = "not-a-hash";
+    expect_error(NULL, wiggly, "16 hex digits");
+    gear_hash = "fedcba9876543210";
+}
+
+/* hg_datafile_hash is FNV-1a 64 (the published test vectors of Fowler, Noll and Vo) of the bytes
+ * without carriage returns. */
+static void content_hash(void)
+{
+    static const char *const text[] = {"a", "foobar", "a\r\nb\n", "a\nb\n"};
+    static const char *const want[] = {"af63dc4c8601ec8c", "85944171f73967e8", NULL, NULL};
+    char hex[4][HG_HASH_HEX], err[HG_ERRLEN] = "";
+    int i;
+    for (i = 0; i < 4; i++) {
+        FILE *fp = fopen(PATH, "wb");
+        fputs(text[i], fp);
+        fclose(fp);
+        CHECK(hg_datafile_hash(PATH, hex[i], err, sizeof err) == 0);
+        if (want[i]) CHECK(strcmp(hex[i], want[i]) == 0);
+    }
+    CHECK(strcmp(hex[2], hex[3]) == 0);
+    CHECK(hg_datafile_hash("/nonexistent/x.txt", hex[0], err, sizeof err) != 0);
+    CHECK(strstr(err, "/nonexistent/x.txt") != NULL);
+}
+
 int main(void)
 {
     interpolation();
+    provenance();
+    content_hash();
     expect_error("speeds 10 100 50 300", wiggly, "ascending");
     expect_error("speeds 10 50 100", wiggly, "at most 9");
     expect_error(NULL, too_high, "efficiency 1.2");
