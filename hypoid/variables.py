@@ -11,7 +11,7 @@ from typing import NamedTuple
 
 MODEL_NAME = 'HypoidGearPair'
 MODEL_VERSION = '0.1.0'
-GUID = '{c93b7983-dd5b-5ebb-a938-3f174af46331}'
+GUID = '{dc19117a-a55d-5c54-8089-178586d721c2}'
 
 
 class Variable(NamedTuple):
@@ -65,7 +65,7 @@ _TABLE = (
     Variable(name='E_friction', vr=28, causality='output', variability='continuous', type='Real', enumeration=None, unit='J', display_unit=None, start=None, min=None, max=None, description='energy dissipated by flank friction since initialisation'),
     Variable(name='E_damping', vr=29, causality='output', variability='continuous', type='Real', enumeration=None, unit='J', display_unit=None, start=None, min=None, max=None, description='energy dissipated by the shaft and mesh dampers since initialisation'),
     Variable(name='E_excitation', vr=30, causality='output', variability='continuous', type='Real', enumeration=None, unit='J', display_unit=None, start=None, min=None, max=None, description='work done on the system by the parametric mesh excitation (varying stiffness and transmission error) since initialisation'),
-    Variable(name='E_stored', vr=31, causality='output', variability='continuous', type='Real', enumeration=None, unit='J', display_unit=None, start=None, min=None, max=None, description='kinetic plus elastic energy now; E_in - E_out - E_friction - E_damping + E_excitation = E_stored - E_stored(0)'),
+    Variable(name='E_stored', vr=31, causality='output', variability='continuous', type='Real', enumeration=None, unit='J', display_unit=None, start=None, min=None, max=None, description='kinetic plus elastic energy now; E_in - E_out - E_friction - E_churn - E_bearings - E_seals - E_damping + E_excitation = E_stored - E_stored(0) (the axle terms are 0 unless axle_losses = full)'),
     Variable(name='pair[1].W', vr=32, causality='output', variability='continuous', type='Real', enumeration=None, unit='N', display_unit=None, start=None, min=None, max=None, description='load carried by tooth pair k (0 out of mesh)'),
     Variable(name='pair[2].W', vr=33, causality='output', variability='continuous', type='Real', enumeration=None, unit='N', display_unit=None, start=None, min=None, max=None, description='load carried by tooth pair k (0 out of mesh)'),
     Variable(name='pair[3].W', vr=34, causality='output', variability='continuous', type='Real', enumeration=None, unit='N', display_unit=None, start=None, min=None, max=None, description='load carried by tooth pair k (0 out of mesh)'),
