@@ -11,46 +11,78 @@
 #define GOVERNOR_ZETA 0.7     /* damping ratio of the speed governor's closed loop */
 #define STEPS_PER_MESH 30     /* CVODE's automatic max_step: 1/30 of a mesh period (docs/physics.md §8.8) */
 
-/* user_file if set (absolute, or relative to the resources), else resources/<builtin>. */
-static int resolve_path(const char *resource_dir, const char *user_file, const char *builtin,
-                        char *path, size_t len, char *err, size_t errlen)
+/* A data file named by a parameter: the user's file if set (absolute, or relative to the
+ * resources), else a built-in one below the resources. */
+typedef struct {
+    const char *user_key, *user_file; /* the file parameter and its value, "" when unset */
+    const char *builtin_key;          /* what picks the built-in file */
+    char builtin[96];                 /* the built-in file below the resources */
+    char path[4096];                  /* the file to read, after resolve() */
+} data_file;
+
+static data_file gearset_file(const hg_vars *v)
 {
-    int n;
-    if (user_file && *user_file)
-        n = user_file[0] == '/' ? snprintf(path, len, "%s", user_file)
-                                : snprintf(path, len, "%s/%s", resource_dir, user_file);
-    else
-        n = snprintf(path, len, "%s/%s", resource_dir, builtin);
+    data_file f = {"gear_set_file", "", "gear_set", "", ""};
+    f.user_file = v->gear_set_file;
+    snprintf(f.builtin, sizeof f.builtin, "gearsets/gearset%d.txt", v->gear_set);
+    return f;
+}
+
+static data_file lubricant_file(const hg_vars *v)
+{
+    data_file f = {"lubricant_file", "", "lubricant", "", ""};
+    f.user_file = v->lubricant_file;
+    snprintf(f.builtin, sizeof f.builtin, "lubricants/%s.txt",
+             v->lubricant == 2 ? "OS265963" : "OS265962");
+    return f;
+}
+
+static data_file map_file(const hg_vars *v)
+{
+    data_file f = {"efficiency_map_file", "", "the built-in efficiency map", "", ""};
+    f.user_file = v->efficiency_map_file;
+    snprintf(f.builtin, sizeof f.builtin, "maps/gearset%d_%s.txt", v->gear_set,
+             v->lubricant == 2 ? "OS265963" : "OS265962");
+    return f;
+}
+
+static int resolve(data_file *f, const char *resource_dir, char *err, size_t errlen)
+{
+    const char *u = f->user_file;
+    size_t len = sizeof f->path;
+    int n = !*u ? snprintf(f->path, len, "%s/%s", resource_dir, f->builtin)
+            : u[0] == '/' ? snprintf(f->path, len, "%s", u)
+                          : snprintf(f->path, len, "%s/%s", resource_dir, u);
     if (n < 0 || (size_t)n >= len) {
-        hg_errorf(err, errlen, "data file path is too long: '%.80s...'", path);
+        hg_errorf(err, errlen, "data file path is too long: '%.80s...'", f->path);
         return -1;
     }
     return 0;
 }
 
-static void gearset_builtin(const hg_vars *v, char *builtin, size_t len)
+/* "gear_set_file = 'x.txt'" or "gear_set = 'gearsets/gearset1.txt'". */
+static void describe(const data_file *f, char *buf, size_t len)
 {
-    snprintf(builtin, len, "gearsets/gearset%d.txt", v->gear_set);
+    snprintf(buf, len, "%s = '%s'", *f->user_file ? f->user_key : f->builtin_key,
+             *f->user_file ? f->user_file : f->builtin);
 }
 
-static const char *lubricant_builtin(const hg_vars *v)
+static int load_failed(const data_file *f, const char *why, char *err, size_t errlen)
 {
-    static const char *const builtin[] = {"lubricants/OS265962.txt", "lubricants/OS265963.txt"};
-    return builtin[v->lubricant == 2];
+    char name[4200];
+    describe(f, name, sizeof name);
+    hg_errorf(err, errlen, "%s: %s", name, why);
+    return -1;
 }
 
 static int load_gearset(hg_setup *s, const char *resource_dir, const hg_vars *v, char *err,
                         size_t errlen)
 {
-    char path[4096], builtin[64], why[HG_ERRLEN];
-    gearset_builtin(v, builtin, sizeof builtin);
-    if (resolve_path(resource_dir, v->gear_set_file, builtin, path, sizeof path, err, errlen))
-        return -1;
-    if (hg_gearset_load(path, &s->gear, why, sizeof why)) {
-        hg_errorf(err, errlen, "%s = '%s': %s", v->gear_set_file[0] ? "gear_set_file" : "gear_set",
-                  v->gear_set_file[0] ? v->gear_set_file : builtin, why);
-        return -1;
-    }
+    data_file f = gearset_file(v);
+    char why[HG_ERRLEN];
+    if (resolve(&f, resource_dir, err, errlen)) return -1;
+    if (hg_gearset_load(f.path, &s->gear, why, sizeof why))
+        return load_failed(&f, why, err, errlen);
     hg_series_scale(&s->gear.k_m, v->k_m_scale);
     hg_series_scale(&s->gear.e_0, v->e_0_scale);
     return 0;
@@ -59,35 +91,31 @@ static int load_gearset(hg_setup *s, const char *resource_dir, const hg_vars *v,
 static int load_lubricant(hg_setup *s, const char *resource_dir, const hg_vars *v, char *err,
                           size_t errlen)
 {
-    const char *name = lubricant_builtin(v);
-    char path[4096], why[HG_ERRLEN];
-    if (resolve_path(resource_dir, v->lubricant_file, name, path, sizeof path, err, errlen))
-        return -1;
-    if (hg_lubricant_load(path, &s->lub, why, sizeof why)) {
-        hg_errorf(err, errlen, "%s = '%s': %s",
-                  v->lubricant_file[0] ? "lubricant_file" : "lubricant",
-                  v->lubricant_file[0] ? v->lubricant_file : name, why);
-        return -1;
-    }
+    data_file f = lubricant_file(v);
+    char why[HG_ERRLEN];
+    if (resolve(&f, resource_dir, err, errlen)) return -1;
+    if (hg_lubricant_load(f.path, &s->lub, why, sizeof why))
+        return load_failed(&f, why, err, errlen);
     return 0;
 }
 
 /* A map applies only to the data file it was made from: its recorded content hash must be the
- * hash of the file in use (`var` = user_file, or the built-in file). */
-static int check_map_source(const hg_effmap_source *made, const char *what, const char *var,
-                            const char *resource_dir, const char *user_file, const char *builtin,
-                            const char *map_name, char *err, size_t errlen)
+ * hash of the file in use. */
+static int check_map_source(const hg_effmap_source *made, const char *what, data_file f,
+                            const char *resource_dir, const char *map_name, char *err,
+                            size_t errlen)
 {
-    char path[4096], hash[HG_HASH_HEX], why[HG_ERRLEN];
-    if (resolve_path(resource_dir, user_file, builtin, path, sizeof path, err, errlen)) return -1;
-    if (hg_datafile_hash(path, hash, why, sizeof why)) {
+    char hash[HG_HASH_HEX], why[HG_ERRLEN], used[4200];
+    if (resolve(&f, resource_dir, err, errlen)) return -1;
+    if (hg_datafile_hash(f.path, hash, why, sizeof why)) {
         hg_errorf(err, errlen, "%s", why);
         return -1;
     }
     if (strcmp(hash, made->hash) == 0) return 0;
-    hg_errorf(err, errlen, "%s was made for the %s '%s' (content hash %s), but this run uses %s = "
-              "'%s' (content hash %s): make a map for it with hypoid effmap", map_name, what,
-              made->source, made->hash, var, user_file[0] ? user_file : builtin, hash);
+    describe(&f, used, sizeof used);
+    hg_errorf(err, errlen, "%s was made for the %s '%s' (content hash %s), but this run uses %s "
+              "(content hash %s): make a map for it with hypoid effmap", map_name, what,
+              made->source, made->hash, used, hash);
     return -1;
 }
 
@@ -95,7 +123,8 @@ static int check_map_source(const hg_effmap_source *made, const char *what, cons
 static int load_map(hg_setup *s, const char *resource_dir, const hg_vars *v, char *err,
                     size_t errlen)
 {
-    char path[4096], builtin[96], gear[64], name[4200], why[HG_ERRLEN];
+    data_file f = map_file(v);
+    char name[4200], why[HG_ERRLEN];
     hg_effmap_free(&s->map);
     s->p.map = NULL;
     if (v->friction_model != HG_FRICTION_MODEL_MAP) return 0;
@@ -109,24 +138,14 @@ static int load_map(hg_setup *s, const char *resource_dir, const hg_vars *v, cha
                   "efficiency_map_file made for that lubricant (hypoid effmap)", v->lubricant_file);
         return -1;
     }
-    snprintf(builtin, sizeof builtin, "maps/gearset%d_%s.txt", v->gear_set,
-             v->lubricant == 2 ? "OS265963" : "OS265962");
-    if (resolve_path(resource_dir, v->efficiency_map_file, builtin, path, sizeof path, err,
-                     errlen))
-        return -1;
-    snprintf(name, sizeof name, "%s = '%s'",
-             v->efficiency_map_file[0] ? "efficiency_map_file" : "the built-in efficiency map",
-             v->efficiency_map_file[0] ? v->efficiency_map_file : builtin);
-    if (hg_effmap_load(path, &s->map, why, sizeof why)) {
-        hg_errorf(err, errlen, "%s: %s", name, why);
-        return -1;
-    }
-    gearset_builtin(v, gear, sizeof gear);
-    if (check_map_source(&s->map.gear_set, "gear set", v->gear_set_file[0] ? "gear_set_file"
-                         : "gear_set", resource_dir, v->gear_set_file, gear, name, err, errlen) ||
-        check_map_source(&s->map.lubricant, "lubricant", v->lubricant_file[0] ? "lubricant_file"
-                         : "lubricant", resource_dir, v->lubricant_file, lubricant_builtin(v),
-                         name, err, errlen)) {
+    if (resolve(&f, resource_dir, err, errlen)) return -1;
+    if (hg_effmap_load(f.path, &s->map, why, sizeof why))
+        return load_failed(&f, why, err, errlen);
+    describe(&f, name, sizeof name);
+    if (check_map_source(&s->map.gear_set, "gear set", gearset_file(v), resource_dir, name, err,
+                         errlen) ||
+        check_map_source(&s->map.lubricant, "lubricant", lubricant_file(v), resource_dir, name,
+                         err, errlen)) {
         hg_effmap_free(&s->map);
         return -1;
     }
