@@ -13,12 +13,18 @@ hg_solver *hg_solver_new(int n, int n_roots, hg_rhs_fn f, hg_root_fn g, void *us
                          const hg_solver_options *opt, char *err, size_t errlen)
 {
     hg_solver *s = calloc(1, sizeof *s);
+    hg_problem pb;
+    pb.n = n;
+    pb.n_roots = n_roots;
+    pb.f = f;
+    pb.g = g;
+    pb.user = user;
     if (!s) {
         hg_errorf(err, errlen, "out of memory creating the solver");
         return NULL;
     }
     s->ops = opt->method == HG_METHOD_NEWMARK ? &hg_newmark_ops : &hg_cvode_ops;
-    s->impl = s->ops->create(n, n_roots, f, g, user, opt, err, errlen);
+    s->impl = s->ops->create(&pb, opt, err, errlen);
     if (!s->impl) {
         free(s);
         return NULL;

@@ -13,10 +13,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 typedef struct {
-    int n, n_roots;
-    hg_rhs_fn f;
-    hg_root_fn g;
-    void *user;
+    hg_problem pb;
     SUNContext ctx;
     void *cvode;
     N_Vector y, atol;
@@ -30,13 +27,13 @@ typedef struct {
 static int rhs_adapter(sunrealtype t, N_Vector y, N_Vector ydot, void *data)
 {
     cvode_solver *s = data;
-    return s->f(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), s->user);
+    return s->pb.f(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), s->pb.user);
 }
 
 static int root_adapter(sunrealtype t, N_Vector y, sunrealtype *g, void *data)
 {
     cvode_solver *s = data;
-    return s->g(t, N_VGetArrayPointer(y), g, s->user);
+    return s->pb.g(t, N_VGetArrayPointer(y), g, s->pb.user);
 }
 
 /* CVODE's own message of a failure, kept for ours. SUNDIALS 7 reports through the context's
@@ -100,7 +97,7 @@ static int catch_errors(cvode_solver *s, char *err, size_t errlen)
 
 static int configure(cvode_solver *s, const hg_solver_options *opt, char *err, size_t errlen)
 {
-    memcpy(N_VGetArrayPointer(s->atol), opt->atol, (size_t)s->n * sizeof(double));
+    memcpy(N_VGetArrayPointer(s->atol), opt->atol, (size_t)s->pb.n * sizeof(double));
     if (catch_errors(s, err, errlen)) return -1;
     CV_CALL(CVodeInit, (s->cvode, rhs_adapter, 0.0, s->y));
     CV_CALL(CVodeSetUserData, (s->cvode, s));
@@ -108,7 +105,7 @@ static int configure(cvode_solver *s, const hg_solver_options *opt, char *err, s
     CV_CALL(CVodeSetMaxNumSteps, (s->cvode, opt->max_steps));
     CV_CALL(CVodeSetStabLimDet, (s->cvode, opt->method == HG_METHOD_BDF));
     CV_CALL(CVodeSetLinearSolver, (s->cvode, s->LS, s->A));
-    if (s->n_roots > 0) CV_CALL(CVodeRootInit, (s->cvode, s->n_roots, root_adapter));
+    if (s->pb.n_roots > 0) CV_CALL(CVodeRootInit, (s->cvode, s->pb.n_roots, root_adapter));
     return 0;
 }
 
@@ -121,7 +118,7 @@ static int configure(cvode_solver *s, const hg_solver_options *opt, char *err, s
 /* The SUNDIALS objects, each named when it cannot be made. */
 static int build(cvode_solver *s, int method, char *err, size_t errlen)
 {
-    int n = s->n;
+    int n = s->pb.n;
     if (SUNContext_Create(HG_SUN_COMM, &s->ctx) != 0)
         return fail_new(err, errlen, "SUNContext_Create");
     if (!(s->cvode = CVodeCreate(method == HG_METHOD_ADAMS ? CV_ADAMS : CV_BDF, s->ctx)))
@@ -131,7 +128,7 @@ static int build(cvode_solver *s, int method, char *err, size_t errlen)
     if (!(s->A = SUNDenseMatrix(n, n, s->ctx))) return fail_new(err, errlen, "SUNDenseMatrix");
     if (!(s->LS = SUNLinSol_Dense(s->y, s->A, s->ctx)))
         return fail_new(err, errlen, "SUNLinSol_Dense");
-    if (!(s->root_info = calloc((size_t)(s->n_roots > 0 ? s->n_roots : 1), sizeof(int))))
+    if (!(s->root_info = calloc((size_t)(s->pb.n_roots > 0 ? s->pb.n_roots : 1), sizeof(int))))
         return fail_new(err, errlen, "the root buffer");
     N_VConst(0.0, s->y);
     return 0;
@@ -139,19 +136,15 @@ static int build(cvode_solver *s, int method, char *err, size_t errlen)
 
 static void destroy(void *impl);
 
-static void *create(int n, int n_roots, hg_rhs_fn f, hg_root_fn g, void *user,
-                    const hg_solver_options *opt, char *err, size_t errlen)
+static void *create(const hg_problem *pb, const hg_solver_options *opt, char *err,
+                    size_t errlen)
 {
     cvode_solver *s = calloc(1, sizeof *s);
     if (!s) {
         hg_errorf(err, errlen, "out of memory creating the solver");
         return NULL;
     }
-    s->n = n;
-    s->n_roots = n_roots;
-    s->f = f;
-    s->g = g;
-    s->user = user;
+    s->pb = *pb;
     if (build(s, opt->method, err, errlen) || configure(s, opt, err, errlen)) {
         destroy(s);
         return NULL;
@@ -198,7 +191,7 @@ static int restart(void *impl, double t0, const double *y0, char *err, size_t er
 {
     cvode_solver *s = impl;
     accumulate_stats(s);
-    memcpy(N_VGetArrayPointer(s->y), y0, (size_t)s->n * sizeof(double));
+    memcpy(N_VGetArrayPointer(s->y), y0, (size_t)s->pb.n * sizeof(double));
     s->last_error[0] = '\0';
     CV_CALL(CVodeReInit, (s->cvode, t0, s->y));
     return 0;
@@ -228,9 +221,9 @@ static hg_advance_result advance(void *impl, double t_stop, double *t, double *y
     cvode_solver *s = impl;
     int flag = CV_SUCCESS;
     if (integrate(s, t_stop, t, &flag, err, errlen)) return HG_ADVANCE_FAILED;
-    memcpy(y, N_VGetArrayPointer(s->y), (size_t)s->n * sizeof(double));
+    memcpy(y, N_VGetArrayPointer(s->y), (size_t)s->pb.n * sizeof(double));
     if (flag == CV_ROOT_RETURN) {
-        if (roots) memcpy(roots, s->root_info, (size_t)s->n_roots * sizeof(int));
+        if (roots) memcpy(roots, s->root_info, (size_t)s->pb.n_roots * sizeof(int));
         return HG_ADVANCE_ROOT;
     }
     if (flag == CV_SUCCESS || flag == CV_TSTOP_RETURN) {

@@ -5,9 +5,17 @@
 #include "io/errmsg.h"
 #include "solver/solver.h"
 
+/* The problem every integrator solves: n states, n_roots root functions, the caller's callbacks. */
 typedef struct {
-    void *(*create)(int n, int n_roots, hg_rhs_fn f, hg_root_fn g, void *user,
-                    const hg_solver_options *opt, char *err, size_t errlen);
+    int n, n_roots;
+    hg_rhs_fn f;
+    hg_root_fn g;
+    void *user;
+} hg_problem;
+
+typedef struct {
+    void *(*create)(const hg_problem *pb, const hg_solver_options *opt, char *err,
+                    size_t errlen);
     void (*destroy)(void *impl);
     int (*restart)(void *impl, double t0, const double *y0, char *err, size_t errlen);
     int (*set_max_step)(void *impl, double h_max, char *err, size_t errlen);

@@ -20,10 +20,7 @@
 #define ROOT_TIME_TOL 1e-13 /* [s] */
 
 typedef struct {
-    int n, n_roots;
-    hg_rhs_fn f;
-    hg_root_fn g;
-    void *user;
+    hg_problem pb;
     double rtol, *atol;
     double h;             /* the fixed step [s] */
     double t, *y;         /* current point */
@@ -47,11 +44,11 @@ static void destroy(void *impl)
     free(s);
 }
 
-static void *create(int n, int n_roots, hg_rhs_fn f, hg_root_fn g, void *user,
-                    const hg_solver_options *opt, char *err, size_t errlen)
+static void *create(const hg_problem *pb, const hg_solver_options *opt, char *err,
+                    size_t errlen)
 {
     newmark *s = calloc(1, sizeof *s);
-    int nr = n_roots > 0 ? n_roots : 1;
+    int n = pb->n, nr = pb->n_roots > 0 ? pb->n_roots : 1;
     if (!s || !(s->atol = malloc((size_t)n * sizeof(double))) ||
         !(s->y = malloc((size_t)(7 * n + 2 * nr) * sizeof(double))) ||
         !(s->A = malloc((size_t)n * (size_t)n * sizeof(double))) ||
@@ -60,11 +57,7 @@ static void *create(int n, int n_roots, hg_rhs_fn f, hg_root_fn g, void *user,
         destroy(s);
         return NULL;
     }
-    s->n = n;
-    s->n_roots = n_roots;
-    s->f = f;
-    s->g = g;
-    s->user = user;
+    s->pb = *pb;
     s->rtol = opt->rtol;
     memcpy(s->atol, opt->atol, (size_t)n * sizeof(double));
     s->max_steps = opt->max_steps;
@@ -84,7 +77,7 @@ static int restart(void *impl, double t0, const double *y0, char *err, size_t er
     (void)err;
     (void)errlen;
     s->t = t0;
-    memcpy(s->y, y0, (size_t)s->n * sizeof(double));
+    memcpy(s->y, y0, (size_t)s->pb.n * sizeof(double));
     s->have_f0 = 0;
     return 0;
 }
@@ -103,7 +96,7 @@ static int set_max_step(void *impl, double h, char *err, size_t errlen)
 static int rhs(newmark *s, double t, const double *y, double *ydot)
 {
     s->evals++;
-    return s->f(t, y, ydot, s->user);
+    return s->pb.f(t, y, ydot, s->pb.user);
 }
 
 /* LU with partial pivoting of the n x n row-major matrix A, in place. */
@@ -148,7 +141,7 @@ static void lu_solve(const double *A, const int *piv, int n, double *b)
 /* A = I - h/2 J(t, y), J by forward differences, then factorised. */
 static int newton_matrix(newmark *s, double t, const double *y, const double *fy, double h)
 {
-    int i, j, n = s->n;
+    int i, j, n = s->pb.n;
     double *col = s->y_trial + n;
     memcpy(s->y_trial, y, (size_t)n * sizeof(double));
     for (j = 0; j < n; j++) {
@@ -168,17 +161,17 @@ static double wrms(const newmark *s, const double *v, const double *ref)
 {
     double sum = 0.0;
     int i;
-    for (i = 0; i < s->n; i++) {
+    for (i = 0; i < s->pb.n; i++) {
         double q = v[i] / (s->rtol * fabs(ref[i]) + s->atol[i]);
         sum += q * q;
     }
-    return sqrt(sum / s->n);
+    return sqrt(sum / s->pb.n);
 }
 
 /* One trapezoidal step of length h from (s->t, s->y) into s->z (and s->fz). */
 static int trapezoid(newmark *s, double h)
 {
-    int i, it, attempt, n = s->n;
+    int i, it, attempt, n = s->pb.n;
     for (attempt = 0; attempt < 2; attempt++) {
         if ((s->h_lu != h || attempt > 0) && newton_matrix(s, s->t, s->y, s->f0, h)) return -1;
         for (i = 0; i < n; i++) s->z[i] = s->y[i] + h * s->f0[i]; /* predictor */
@@ -197,7 +190,7 @@ static int trapezoid(newmark *s, double h)
 static int first_crossing(const newmark *s, double *frac)
 {
     int i, best = -1;
-    for (i = 0; i < s->n_roots; i++) {
+    for (i = 0; i < s->pb.n_roots; i++) {
         double a = s->g0[i], b = s->g1[i], f;
         if (a == 0.0 || !((a < 0.0 && b >= 0.0) || (a > 0.0 && b <= 0.0))) continue;
         f = a / (a - b);
@@ -218,7 +211,7 @@ static int locate_root(newmark *s, double *h, int i)
     for (it = 0; it < ROOT_MAX_ITER && hi - lo > ROOT_TIME_TOL; it++) {
         double mid = hi - g_hi * (hi - lo) / (g_hi - g_lo), g_mid;
         if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
-        if (trapezoid(s, mid) || s->g(s->t + mid, s->z, s->g1, s->user)) return -1;
+        if (trapezoid(s, mid) || s->pb.g(s->t + mid, s->z, s->g1, s->pb.user)) return -1;
         g_mid = s->g1[i];
         if ((g_mid < 0.0) == (g_lo < 0.0) && g_mid != 0.0) {
             lo = mid, g_lo = g_mid;
@@ -232,7 +225,7 @@ static int locate_root(newmark *s, double *h, int i)
             if (g_mid == 0.0) break;
         }
     }
-    if (trapezoid(s, step) || s->g(s->t + step, s->z, s->g1, s->user)) return -1;
+    if (trapezoid(s, step) || s->pb.g(s->t + step, s->z, s->g1, s->pb.user)) return -1;
     *h = step;
     return 0;
 }
@@ -240,7 +233,7 @@ static int locate_root(newmark *s, double *h, int i)
 static void root_directions(const newmark *s, int *roots)
 {
     int i;
-    for (i = 0; i < s->n_roots; i++) {
+    for (i = 0; i < s->pb.n_roots; i++) {
         double a = s->g0[i], b = s->g1[i];
         roots[i] = (a < 0.0 && b >= 0.0) ? 1 : (a > 0.0 && b <= 0.0) ? -1 : 0;
     }
@@ -255,32 +248,32 @@ static hg_advance_result advance(void *impl, double t_stop, double *t, double *y
         if (rhs(s, s->t, s->y, s->f0)) goto failed;
         s->have_f0 = 1;
     }
-    if (s->n_roots && s->g(s->t, s->y, s->g0, s->user)) goto failed;
+    if (s->pb.n_roots && s->pb.g(s->t, s->y, s->g0, s->pb.user)) goto failed;
     while (s->t < t_stop) {
         double h = fmin(s->h, t_stop - s->t), frac = 1.0;
         int hit;
         if (h < 1e-9 * s->h) h = t_stop - s->t; /* no sliver steps before t_stop */
         if (++taken > s->max_steps || trapezoid(s, h)) goto failed;
         hit = -1;
-        if (s->n_roots) {
-            if (s->g(s->t + h, s->z, s->g1, s->user)) goto failed;
+        if (s->pb.n_roots) {
+            if (s->pb.g(s->t + h, s->z, s->g1, s->pb.user)) goto failed;
             hit = first_crossing(s, &frac);
             if (hit >= 0 && locate_root(s, &h, hit)) goto failed;
         }
         s->steps++;
         s->t = (h == t_stop - s->t) ? t_stop : s->t + h;
-        memcpy(s->y, s->z, (size_t)s->n * sizeof(double));
-        memcpy(s->f0, s->fz, (size_t)s->n * sizeof(double));
+        memcpy(s->y, s->z, (size_t)s->pb.n * sizeof(double));
+        memcpy(s->f0, s->fz, (size_t)s->pb.n * sizeof(double));
         if (hit >= 0) {
             root_directions(s, roots);
             *t = s->t;
-            memcpy(y, s->y, (size_t)s->n * sizeof(double));
+            memcpy(y, s->y, (size_t)s->pb.n * sizeof(double));
             return HG_ADVANCE_ROOT;
         }
-        if (s->n_roots) memcpy(s->g0, s->g1, (size_t)s->n_roots * sizeof(double));
+        if (s->pb.n_roots) memcpy(s->g0, s->g1, (size_t)s->pb.n_roots * sizeof(double));
     }
     *t = t_stop;
-    memcpy(y, s->y, (size_t)s->n * sizeof(double));
+    memcpy(y, s->y, (size_t)s->pb.n * sizeof(double));
     return HG_ADVANCE_REACHED;
 failed:
     hg_errorf(err, errlen, "Newmark: %s at t = %.9g s (step %g s); use a shorter step "
