@@ -95,7 +95,7 @@ def lubricant_ranking(pts, torque=100.0):
                     f"eta(OS265962) - eta(OS265963) = {100 * gap.min():.3f} to "
                     f"{100 * gap.max():.3f} %-points over {len(gap)} speeds "
                     f"({speed_range(gap.index)})", bool((gap > 0).all()),
-                    f"{torque:g} N.m")
+                    f"{torque:g} N·m")
 
 
 def swapped_alpha(pts, torque=100.0):
@@ -107,7 +107,7 @@ def swapped_alpha(pts, torque=100.0):
     return _finding("F2", "7", text,
                     f"share of the efficiency gap closed: {100 * closure.min():.0f} to "
                     f"{100 * closure.max():.0f} % (median {100 * closure.median():.0f} %) over "
-                    f"{len(closure)} speeds", bool((closure >= 0.5).all()), f"{torque:g} N.m")
+                    f"{len(closure)} speeds", bool((closure >= 0.5).all()), f"{torque:g} N·m")
 
 
 def resonance_dips(pts, mode, gear_set=1, low=(50.0, 100.0), high=(200.0, 300.0), suffix="",
@@ -123,10 +123,10 @@ def resonance_dips(pts, mode, gear_set=1, low=(50.0, 100.0), high=(200.0, 300.0)
     ok = None
     if all(np.isfinite(lo + hi)):
         ok = min(lo) > DIP_MIN and max(hi) < FADE * min(lo)
-    measure = ", ".join(f"{t:g} N.m: {100 * d:.3f}" for t, d in dips.items())
+    measure = ", ".join(f"{t:g} N·m: {100 * d:.3f}" for t, d in dips.items())
     return _finding(f"F3-{mode}{suffix}", "6a, 8",
-                    "efficiency dips near the mesh resonance at 50 and 100 N.m; the dip fades at "
-                    "200 and 300 N.m", f"dip below the trend [%-points] {measure}", ok,
+                    "efficiency dips near the mesh resonance at 50 and 100 N·m; the dip fades at "
+                    "200 and 300 N·m", f"dip below the trend [%-points] {measure}", ok,
                     f"{n_res:.0f} rpm (mode {mode[1]})"
                     + "".join(f", {k} = {v:g}" for k, v in where.items())), dips
 
@@ -142,10 +142,10 @@ def jump_finding(cont, torque, mode, pts, gear_set=1):
     band = speed_range(two) if two else "none"
     ok = bool(two) and j["min_DTE_min_minus_b_um"] < 0
     return _finding(f"F4-{mode}-{torque:g}", "9", text,
-                    f"two branches: {band} (largest up/down gap {j['max_branch_gap_um']:.1f} um);"
-                    f" min(DTE) - b = {j['min_DTE_min_minus_b_um']:.1f} um; contact lost up to "
+                    f"two branches: {band} (largest up/down gap {j['max_branch_gap_um']:.1f} µm);"
+                    f" min(DTE) - b = {j['min_DTE_min_minus_b_um']:.1f} µm; contact lost up to "
                     f"{100 * j['max_contact_loss']:.0f} % of the time", ok,
-                    f"{torque:g} N.m near {n_res:.0f} rpm (mode {mode[1]})"), j
+                    f"{torque:g} N·m near {n_res:.0f} rpm (mode {mode[1]})"), j
 
 
 def away_from_resonance(speeds, res, margin=150.0):
@@ -169,7 +169,7 @@ def gear_sets(pts, torque=100.0):
                     f"eta(set 2) - eta(set 3) = {100 * da.min():.3f} to {100 * da.max():.3f} "
                     f"%-points at {len(da)} speeds away from resonance (all speeds: "
                     f"{100 * d.min():.3f} to {100 * d.max():.3f})", bool((da > 0).all()),
-                    f"{torque:g} N.m")
+                    f"{torque:g} N·m")
 
 
 def gear_set_dte(pts, torque=100.0, band=(1000.0, 2000.0)):
@@ -187,7 +187,7 @@ def gear_set_dte(pts, torque=100.0, band=(1000.0, 2000.0)):
                     f"at {d['2'].idxmax():g} rpm, set 3 {d['3'].max():.1f} µm at "
                     f"{d['3'].idxmax():g} rpm; set 2 larger at {100 * share:.0f} % of "
                     f"{len(d)} speeds", bool(d["2"].max() > d["3"].max() and share > 0.5),
-                    f"{torque:g} N.m")
+                    f"{torque:g} N·m")
 
 
 def regime_finding(pts, trace_dir, speed=1000.0):
@@ -209,7 +209,7 @@ def regime_finding(pts, trace_dir, speed=1000.0):
         high = s["W"] > 0.5 * s["W"].max()
         counts = {r: float(np.mean(cls[high] == i)) for i, r in enumerate(regime.REGIMES)}
         share_pe.append(counts["PE"])
-        parts.append(f"{row.T_s:g} N.m: " + ", ".join(f"{r} {100 * v:.0f} %"
+        parts.append(f"{row.T_s:g} N·m: " + ", ".join(f"{r} {100 * v:.0f} %"
                                                       for r, v in counts.items() if v > 0))
     if not parts:
         return None
@@ -239,7 +239,7 @@ def resonance_load(pts, near, away=5000.0, torque=100.0, fid="F6"):
                     f"{100 * b['contact_loss_fraction']:.0f} % of the time; mean load in contact "
                     f"{a['W_t_mean_contact_N']:.0f} vs {b['W_t_mean_contact_N']:.0f} N; mean mu "
                     f"{a['mu_mean']:.4f} vs {b['mu_mean']:.4f}", ok,
-                    f"{torque:g} N.m, {near:g} vs {away:g} rpm")
+                    f"{torque:g} N·m, {near:g} vs {away:g} rpm")
 
 
 def all_findings(pts, cont, trace_dir=None):

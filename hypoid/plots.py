@@ -129,7 +129,7 @@ def fig9_jump(cont, pts, out):
     torques = sorted(sel["T_s"].unique())
     fig, axes = plt.subplots(len(torques), 1, figsize=(9, 4.2 * len(torques)), sharex=True,
                              squeeze=False)
-    for i, (ax, t) in enumerate(zip(axes[:, 0], torques)):
+    for ax, t in zip(axes[:, 0], torques):
         g = sel[sel["T_s"] == t]
         for branch, style, mk in (("up", "-", "^"), ("down", "--", "v")):
             b = g[g["branch"] == branch].sort_values("speed_rpm")
@@ -146,11 +146,12 @@ def fig9_jump(cont, pts, out):
         ax.set_ylabel("DTE [µm]")
         ax.grid(True, alpha=0.3)
         ax.set_title(f"T_s = {t:g} N·m: speed swept up then down (continuation)", fontsize=10)
-        if i == 0:
-            ax.legend(fontsize=7, ncol=2, loc="upper right")
     axes[-1, 0].set_xlabel("pinion speed [rpm]")
     fig.suptitle("DTE peak response, OS265962, 40 °C, gear set 1 (paper Fig. 9)")
-    fig.tight_layout(rect=(0, 0, 1, 0.98))
+    # below the panels, where it hides neither data nor the resonance labels
+    handles, labels = axes[0, 0].get_legend_handles_labels()
+    fig.legend(handles, labels, fontsize=8, ncol=3, loc="lower center")
+    fig.tight_layout(rect=(0, 0.07 / len(torques) + 0.02, 1, 0.98))
     return _save(fig, out, "fig9_dte_jump")
 
 
@@ -188,14 +189,15 @@ def fig10_mesh_cycle(pts, out, torque=100.0):
         ax[0].plot(x, w / 1e3, color=c, label=lab)
         on = w > 1.0
         ax[1].plot(x, np.where(on, mu, 0.0), color=c,
-                   label=f"{row.speed_rpm:g} rpm, mu_mean {row.mu_mean:.4f} (load-weighted "
-                         "over all pairs and the window, as in the table)")
+                   label=f"{row.speed_rpm:g} rpm, mu_mean {row.mu_mean:.4f}")
     ax[0].set_ylabel("tooth pair 1 contact load [kN]")
     ax[1].set_ylabel("tooth pair 1 friction coefficient [-]")
     ax[1].set_xlabel("engagement cycle of pair 1 [mesh cycles]")
     for a in ax:
         a.grid(True, alpha=0.3)
         a.legend(fontsize=8, loc="upper right")
+    ax[1].legend(fontsize=8, loc="upper right", title_fontsize=8,
+                 title="mu_mean: load-weighted over all pairs and the window (as in the table)")
     ax[0].set_title(f"One tooth pair over its engagement, T_s = {torque:g} N·m, OS265962, "
                     "gear set 1 (paper Fig. 10)")
     return _save(fig, out, "fig10_mesh_cycle")

@@ -67,3 +67,21 @@ def test_sweep_plot_legend_has_units(captured):
     assert "T_bath = 40 °C, T_s = 50 N·m" in texts, texts
     labels = [a.get_ylabel() for a in captured["sweep"].axes]
     assert "DTE peak-to-peak [µm]" in labels
+
+
+def test_fig9_legend_hides_no_resonance_label(captured):
+    """The mode-3 label sat behind the legend in the upper right of the first panel: the legend
+    is now the figure's, below the panels, outside every axes."""
+    cont = pd.DataFrame([dict(TRACED, branch=b, speed_rpm=n, DTE_max_um=90.0, DTE_min_um=75.0,
+                              b_um=70.0, contact_loss_fraction=0.0, T_s=t)
+                         for t in (50.0, 100.0) for b in ("up", "down")
+                         for n in (1000.0, 1500.0, 2000.0)])
+    pts = pd.DataFrame([dict(TRACED, n_f2_rpm=1203.0, n_f3_rpm=2000.0)])
+    plots.fig9_jump(cont, pts, "unused")
+    fig = captured["fig9_dte_jump"]
+    assert all(ax.get_legend() is None for ax in fig.axes)
+    assert len(fig.legends) == 1
+    top = min(ax.get_position().y0 for ax in fig.axes)
+    fig.canvas.draw()
+    box = fig.legends[0].get_window_extent().transformed(fig.transFigure.inverted())
+    assert box.y1 <= top
