@@ -43,57 +43,43 @@ static fmi2Status prepare_get(hg_instance *c, const char *fn, const void *vr, si
     return fmi2OK;
 }
 
-fmi2Status fmi2GetReal(fmi2Component comp, const fmi2ValueReference vr[], size_t nvr,
-                       fmi2Real value[])
+/* Copies each variable's field into values[i]: a double, an int or a string pointer, whose
+ * sizes the FMI types share (fmi2Real, fmi2Integer / fmi2Boolean, fmi2String). */
+static fmi2Status get_values(hg_instance *c, const char *fn, hg_base_type type,
+                             const fmi2ValueReference vr[], size_t nvr, void *values, size_t size)
 {
-    hg_instance *c = comp;
     size_t i;
-    if (prepare_get(c, __func__, vr, nvr, value) != fmi2OK) return fmi2Error;
+    if (prepare_get(c, fn, vr, nvr, values) != fmi2OK) return fmi2Error;
     for (i = 0; i < nvr; i++) {
-        const hg_var_info *info = hg_lookup(c, __func__, vr[i], HG_REAL);
+        const hg_var_info *info = hg_lookup(c, fn, vr[i], type);
         if (!info) return fmi2Error;
-        value[i] = *(const double *)hg_var_cptr(&c->vars, info);
+        memcpy((char *)values + i * size, hg_var_cptr(&c->vars, info), size);
     }
     return fmi2OK;
 }
 
-static fmi2Status get_ints(hg_instance *c, const char *fn, hg_base_type type,
-                           const fmi2ValueReference vr[], size_t nvr, int value[])
+fmi2Status fmi2GetReal(fmi2Component comp, const fmi2ValueReference vr[], size_t nvr,
+                       fmi2Real value[])
 {
-    size_t i;
-    if (prepare_get(c, fn, vr, nvr, value) != fmi2OK) return fmi2Error;
-    for (i = 0; i < nvr; i++) {
-        const hg_var_info *info = hg_lookup(c, fn, vr[i], type);
-        if (!info) return fmi2Error;
-        value[i] = *(const int *)hg_var_cptr(&c->vars, info);
-    }
-    return fmi2OK;
+    return get_values(comp, __func__, HG_REAL, vr, nvr, value, sizeof *value);
 }
 
 fmi2Status fmi2GetInteger(fmi2Component comp, const fmi2ValueReference vr[], size_t nvr,
                           fmi2Integer value[])
 {
-    return get_ints(comp, __func__, HG_INTEGER, vr, nvr, value);
+    return get_values(comp, __func__, HG_INTEGER, vr, nvr, value, sizeof *value);
 }
 
 fmi2Status fmi2GetBoolean(fmi2Component comp, const fmi2ValueReference vr[], size_t nvr,
                           fmi2Boolean value[])
 {
-    return get_ints(comp, __func__, HG_BOOLEAN, vr, nvr, value);
+    return get_values(comp, __func__, HG_BOOLEAN, vr, nvr, value, sizeof *value);
 }
 
 fmi2Status fmi2GetString(fmi2Component comp, const fmi2ValueReference vr[], size_t nvr,
                          fmi2String value[])
 {
-    hg_instance *c = comp;
-    size_t i;
-    if (prepare_get(c, __func__, vr, nvr, value) != fmi2OK) return fmi2Error;
-    for (i = 0; i < nvr; i++) {
-        const hg_var_info *info = hg_lookup(c, __func__, vr[i], HG_STRING);
-        if (!info) return fmi2Error;
-        value[i] = *(char *const *)hg_var_cptr(&c->vars, info);
-    }
-    return fmi2OK;
+    return get_values(comp, __func__, HG_STRING, vr, nvr, value, sizeof *value);
 }
 
 /* ------------------------------------------------------------------ set */
@@ -138,47 +124,42 @@ static void note_set(hg_instance *c)
     if (c->state & ST_BEFORE_RUN) c->set_up = 0;
 }
 
-fmi2Status fmi2SetReal(fmi2Component comp, const fmi2ValueReference vr[], size_t nvr,
-                       const fmi2Real value[])
+/* Sets Real (values: fmi2Real[]) or Integer / Boolean (values: int[]) variables. */
+static fmi2Status set_numbers(hg_instance *c, const char *fn, hg_base_type type,
+                              const fmi2ValueReference vr[], size_t nvr, const void *values)
 {
-    hg_instance *c = comp;
     size_t i;
-    if (!prepare_set(c, __func__, vr, nvr, value)) return fmi2Error;
+    if (!prepare_set(c, fn, vr, nvr, values)) return fmi2Error;
     for (i = 0; i < nvr; i++) {
-        const hg_var_info *info = hg_lookup(c, __func__, vr[i], HG_REAL);
-        if (!info || !settable(c, __func__, info) || check_range(c, __func__, info, value[i]))
-            return fmi2Error;
-        *(double *)hg_var_ptr(&c->vars, info) = value[i];
+        const hg_var_info *info = hg_lookup(c, fn, vr[i], type);
+        int k = type == HG_REAL ? 0 : ((const int *)values)[i];
+        double x = type == HG_REAL ? ((const double *)values)[i] : k;
+        if (!info || !settable(c, fn, info) || check_range(c, fn, info, x)) return fmi2Error;
+        if (type == HG_REAL)
+            *(double *)hg_var_ptr(&c->vars, info) = x;
+        else
+            *(int *)hg_var_ptr(&c->vars, info) = type == HG_BOOLEAN ? k != 0 : k;
         note_set(c);
     }
     return fmi2OK;
 }
 
-static fmi2Status set_ints(hg_instance *c, const char *fn, hg_base_type type,
-                           const fmi2ValueReference vr[], size_t nvr, const int value[])
+fmi2Status fmi2SetReal(fmi2Component comp, const fmi2ValueReference vr[], size_t nvr,
+                       const fmi2Real value[])
 {
-    size_t i;
-    if (!prepare_set(c, fn, vr, nvr, value)) return fmi2Error;
-    for (i = 0; i < nvr; i++) {
-        const hg_var_info *info = hg_lookup(c, fn, vr[i], type);
-        if (!info || !settable(c, fn, info) || check_range(c, fn, info, value[i]))
-            return fmi2Error;
-        *(int *)hg_var_ptr(&c->vars, info) = type == HG_BOOLEAN ? value[i] != 0 : value[i];
-        note_set(c);
-    }
-    return fmi2OK;
+    return set_numbers(comp, __func__, HG_REAL, vr, nvr, value);
 }
 
 fmi2Status fmi2SetInteger(fmi2Component comp, const fmi2ValueReference vr[], size_t nvr,
                           const fmi2Integer value[])
 {
-    return set_ints(comp, __func__, HG_INTEGER, vr, nvr, value);
+    return set_numbers(comp, __func__, HG_INTEGER, vr, nvr, value);
 }
 
 fmi2Status fmi2SetBoolean(fmi2Component comp, const fmi2ValueReference vr[], size_t nvr,
                           const fmi2Boolean value[])
 {
-    return set_ints(comp, __func__, HG_BOOLEAN, vr, nvr, value);
+    return set_numbers(comp, __func__, HG_BOOLEAN, vr, nvr, value);
 }
 
 fmi2Status fmi2SetString(fmi2Component comp, const fmi2ValueReference vr[], size_t nvr,
