@@ -10,6 +10,7 @@
 
 #include "fmi2Functions.h"
 #include "hg_vars.h"
+#include "io/errmsg.h"
 #include "model/hypoid.h"
 
 /* FMI 2.0 co-simulation states (bit flags, so a function can name the set it is allowed in). */
@@ -46,17 +47,11 @@ typedef struct {
     int set_up; /* the model is set up for the current parameters and initial inputs */
 } hg_instance;
 
-#if defined(__GNUC__)
-#define HG_PRINTF(f, a) __attribute__((format(printf, f, a)))
-#else
-#define HG_PRINTF(f, a)
-#endif
-
 /* Logs to the host when the category is on. status: the fmi2Status the message accompanies. */
-void hg_log(hg_instance *c, fmi2Status status, int category, const char *fmt, ...) HG_PRINTF(4, 5);
+void hg_log(hg_instance *c, fmi2Status status, int category, const char *fmt, ...) HG_PRINTF_LIKE(4, 5);
 
 /* Logs "fn: message" as an error. */
-void hg_error(hg_instance *c, const char *fn, const char *fmt, ...) HG_PRINTF(3, 4);
+void hg_error(hg_instance *c, const char *fn, const char *fmt, ...) HG_PRINTF_LIKE(3, 4);
 
 /* An error in the model: logs "fn: why" and leaves the instance in the error state. */
 fmi2Status hg_fail(hg_instance *c, const char *fn, const char *why);

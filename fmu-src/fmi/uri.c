@@ -48,10 +48,26 @@ static const char *path_part(const char *uri, char *why, size_t whylen)
     return p;
 }
 
+/* Windows: "/C:/dir" (from file:///C:/dir) names "C:/dir"; the slash after the drive stays.
+ * Elsewhere a path is left as it is. Returns the shortest length trailing slashes may leave. */
+static size_t local_path(char *path)
+{
+#ifdef _WIN32
+    if (path[0] == '/' && isalpha((unsigned char)path[1]) && path[2] == ':' &&
+        (path[3] == '/' || path[3] == '\\')) {
+        memmove(path, path + 1, strlen(path));
+        return 3;
+    }
+#endif
+    (void)path;
+    return 1;
+}
+
 char *hg_uri_to_path(const char *uri, char *why, size_t whylen)
 {
     const char *p;
     char *out, *o;
+    size_t keep;
     if (!uri || !*uri) {
         hg_errorf(why, whylen, "the resource location is empty");
         return NULL;
@@ -76,6 +92,8 @@ char *hg_uri_to_path(const char *uri, char *why, size_t whylen)
         }
     }
     *o = '\0';
-    while (o > out + 1 && o[-1] == '/') *--o = '\0'; /* drop trailing slashes */
+    keep = local_path(out);
+    for (o = out + strlen(out); (size_t)(o - out) > keep && o[-1] == '/';)
+        *--o = '\0'; /* drop trailing slashes */
     return out;
 }

@@ -11,7 +11,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#ifdef _WIN32
+#include <io.h>
+#include <windows.h>
+#else
 #include <unistd.h>
+#endif
 
 #define MAX_FILE_BYTES (4L * 1024L * 1024L)
 
@@ -39,13 +44,37 @@ static char *dup_str(const char *s, size_t len)
     return d;
 }
 
+#ifdef _WIN32
+/* A file descriptor reading path, in binary mode. FMI paths are UTF-8 (they come from URIs):
+ * opened through UTF-16, and in the ANSI code page only when path is not valid UTF-8. */
+static int open_readonly(const char *path)
+{
+    int fd = -1, n = MultiByteToWideChar(CP_UTF8, MB_ERR_INVALID_CHARS, path, -1, NULL, 0);
+    wchar_t *wide = n > 0 ? malloc((size_t)n * sizeof *wide) : NULL;
+    if (wide && MultiByteToWideChar(CP_UTF8, MB_ERR_INVALID_CHARS, path, -1, wide, n) == n)
+        fd = _wopen(wide, _O_RDONLY | _O_BINARY);
+    else
+        fd = _open(path, _O_RDONLY | _O_BINARY);
+    free(wide);
+    return fd;
+}
+#define close _close
+#define fdopen _fdopen
+#else
+/* A file descriptor reading path; O_NONBLOCK: opening a FIFO does not wait for a writer. */
+static int open_readonly(const char *path)
+{
+    return open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+}
+#endif
+
 /* Opens path only when it is a regular file: a directory, device or FIFO is refused at once
  * (a plain fopen of a FIFO would wait for a writer forever). *len receives the file size. */
 static FILE *open_regular(const char *path, long *len, char *err, size_t errlen)
 {
     struct stat st;
     FILE *fp;
-    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    int fd = open_readonly(path);
     if (fd < 0) {
         hg_errorf(err, errlen, "cannot open data file '%s': %s", path, strerror(errno));
         return NULL;
@@ -377,4 +406,14 @@ int hg_datafile_hash(const char *path, char hex[HG_HASH_HEX], char *err, size_t 
     free(text);
     snprintf(hex, HG_HASH_HEX, "%016llx", h);
     return 0;
+}
+
+int hg_path_is_absolute(const char *path)
+{
+#ifdef _WIN32
+    if (isalpha((unsigned char)path[0]) && path[1] == ':' && (path[2] == '\\' || path[2] == '/'))
+        return 1;
+    if (path[0] == '\\') return 1;
+#endif
+    return path[0] == '/';
 }

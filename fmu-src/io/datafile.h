@@ -51,4 +51,7 @@ int hg_datafile_check_all_used(const hg_datafile *f, char *err, size_t errlen);
 #define HG_HASH_HEX 17
 int hg_datafile_hash(const char *path, char hex[HG_HASH_HEX], char *err, size_t errlen);
 
+/* Is path absolute on this platform? ("/..."; on Windows also "C:\\...", "C:/..." and "\\\\...") */
+int hg_path_is_absolute(const char *path);
+
 #endif

@@ -3,6 +3,8 @@
 #ifndef HG_LOG_H
 #define HG_LOG_H
 
+#include "io/errmsg.h"
+
 /* category: "logEvents", "logStatusWarning", "logStatusError" or "logAll". */
 typedef void (*hg_log_fn)(void *ctx, const char *category, const char *message);
 
@@ -12,10 +14,6 @@ typedef struct {
 } hg_logger;
 
 /* printf-style message through lg (at most HG_ERRLEN - 1 characters). */
-void hg_logf(const hg_logger *lg, const char *category, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
-#endif
-    ;
+void hg_logf(const hg_logger *lg, const char *category, const char *fmt, ...) HG_PRINTF_LIKE(3, 4);
 
 #endif

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "io/datafile.h"
 #include "io/errmsg.h"
 #include "model/modal.h"
 #include "model/plausibility.h"
@@ -51,7 +52,7 @@ static int resolve(data_file *f, const char *resource_dir, char *err, size_t err
     const char *u = f->user_file;
     size_t len = sizeof f->path;
     int n = !*u ? snprintf(f->path, len, "%s/%s", resource_dir, f->builtin)
-            : u[0] == '/' ? snprintf(f->path, len, "%s", u)
+            : hg_path_is_absolute(u) ? snprintf(f->path, len, "%s", u)
                           : snprintf(f->path, len, "%s/%s", resource_dir, u);
     if (n < 0 || (size_t)n >= len) {
         hg_errorf(err, errlen, "data file path is too long: '%.80s...'", f->path);

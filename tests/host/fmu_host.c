@@ -1,12 +1,16 @@
 /* The shared parts of the C FMI hosts: see fmu_host.h. */
-#define _XOPEN_SOURCE 700 /* POSIX 2008 with realpath */
+#define _XOPEN_SOURCE 700 /* POSIX 2008 with realpath (Windows: _fullpath) */
 #include "fmu_host.h"
 
-#include <dlfcn.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#ifdef _WIN32
+#include <windows.h>
+#else
+#include <dlfcn.h>
+#endif
 
 int host_fail(const char *what)
 {
@@ -16,18 +20,84 @@ int host_fail(const char *what)
 
 /* ------------------------------------------------------------------ the FMU's functions */
 
+/* ------------------------------------------------------------------ the platform */
+
+#ifdef _WIN32
+#define HOST_PLATFORM "win64"
+#define HOST_LIB_SUFFIX ".dll"
+static void *lib_open(const char *path)
+{
+    return (void *)LoadLibraryA(path);
+}
+
+static void *lib_symbol(void *lib, const char *name)
+{
+    FARPROC f = GetProcAddress((HMODULE)lib, name);
+    void *p;
+    memcpy(&p, &f, sizeof p); /* a function pointer as the data pointer dlsym also returns */
+    return p;
+}
+
+static void lib_close(void *lib)
+{
+    FreeLibrary((HMODULE)lib);
+}
+
+static const char *lib_error(void)
+{
+    return "Windows error (GetLastError)";
+}
+
+static int absolute_path(const char *path, char *out)
+{
+    DWORD attr;
+    if (!_fullpath(out, path, PATH_MAX)) return -1;
+    attr = GetFileAttributesA(out);
+    return attr != INVALID_FILE_ATTRIBUTES && (attr & FILE_ATTRIBUTE_DIRECTORY) ? 0 : -1;
+}
+#else
+#define HOST_PLATFORM "linux64"
+#define HOST_LIB_SUFFIX ".so"
+static void *lib_open(const char *path)
+{
+    return dlopen(path, RTLD_NOW | RTLD_LOCAL);
+}
+
+static void *lib_symbol(void *lib, const char *name)
+{
+    return dlsym(lib, name);
+}
+
+static void lib_close(void *lib)
+{
+    dlclose(lib);
+}
+
+static const char *lib_error(void)
+{
+    return dlerror();
+}
+
+static int absolute_path(const char *path, char *out)
+{
+    return realpath(path, out) ? 0 : -1;
+}
+#endif
+
+/* ------------------------------------------------------------------ the FMU's functions */
+
 static void *symbol(void *so, const char *name)
 {
-    void *p = dlsym(so, name);
-    if (!p) fprintf(stderr, "fmu_host: %s is missing: %s\n", name, dlerror());
+    void *p = lib_symbol(so, name);
+    if (!p) fprintf(stderr, "fmu_host: %s is missing: %s\n", name, lib_error());
     return p;
 }
 
 int host_load(fmu_lib *f, const char *so_path)
 {
     memset(f, 0, sizeof *f);
-    if (!(f->so = dlopen(so_path, RTLD_NOW | RTLD_LOCAL))) {
-        fprintf(stderr, "fmu_host: cannot load %s: %s\n", so_path, dlerror());
+    if (!(f->so = lib_open(so_path))) {
+        fprintf(stderr, "fmu_host: cannot load %s: %s\n", so_path, lib_error());
         return -1;
     }
 #define SYM(field, name) (*(void **)&f->field = symbol(f->so, name)) != NULL
@@ -44,13 +114,13 @@ int host_load(fmu_lib *f, const char *so_path)
         SYM(serialize, "fmi2SerializeFMUstate") && SYM(deserialize, "fmi2DeSerializeFMUstate"))
         return 0;
 #undef SYM
-    dlclose(f->so);
+    lib_close(f->so);
     return -1;
 }
 
 void host_unload(fmu_lib *f)
 {
-    if (f->so) dlclose(f->so);
+    if (f->so) lib_close(f->so);
     f->so = NULL;
 }
 
@@ -100,17 +170,18 @@ long host_value_reference(const fmu_info *m, const char *name)
     return strtol(vr, NULL, 10);
 }
 
-/* file:// URI of a local path, percent-encoding all but unreserved characters and '/'. */
+/* file:// URI of a local path, percent-encoding all but unreserved characters, '/' and ':'; a
+ * Windows path "C:\\dir" becomes file:///C:/dir. */
 static char *file_uri(const char *path)
 {
     static const char hex[] = "0123456789ABCDEF";
-    char *uri = malloc(3 * strlen(path) + 8), *o;
+    char *uri = malloc(3 * strlen(path) + 9), *o;
     if (!uri) return NULL;
-    strcpy(uri, "file://");
-    for (o = uri + 7; *path; path++) {
-        unsigned char ch = (unsigned char)*path;
+    strcpy(uri, path[0] && path[1] == ':' ? "file:///" : "file://");
+    for (o = uri + strlen(uri); *path; path++) {
+        unsigned char ch = (unsigned char)(*path == '\\' ? '/' : *path);
         if ((ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') ||
-            strchr("-._~/", ch)) {
+            strchr("-._~/:", ch)) {
             *o++ = (char)ch;
         } else {
             *o++ = '%';
@@ -134,9 +205,10 @@ int host_read_info(fmu_info *m, const char *dir)
         fprintf(stderr, "fmu_host: cannot read %s\n", path);
         return -1;
     }
-    snprintf(m->so_path, sizeof m->so_path, "%s/binaries/linux64/%s.so", dir, id);
+    snprintf(m->so_path, sizeof m->so_path, "%s/binaries/" HOST_PLATFORM "/%s" HOST_LIB_SUFFIX,
+             dir, id);
     snprintf(path, sizeof path, "%s/resources", dir);
-    if (!realpath(path, real_dir) || !(m->resource_uri = file_uri(real_dir))) {
+    if (absolute_path(path, real_dir) || !(m->resource_uri = file_uri(real_dir))) {
         fprintf(stderr, "fmu_host: no resources folder in %s\n", dir);
         return -1;
     }

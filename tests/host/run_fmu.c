@@ -10,12 +10,18 @@
  *                                         cycles (reload: dlopen/dlclose every cycle); reports
  *                                         RSS and open file descriptors, fails on growth (norss:
  *                                         no RSS check, for ASan and valgrind, which hold memory)
+ *   run_fmu FMU_DIR outputs T [NAME=VALUE ...]
+ *                                         simulate T s with h = 1e-4 from the start values,
+ *                                         NAME=VALUE set before initialisation; print every Real
+ *                                         variable at T as "VR HEX DECIMAL" (the exact bits;
+ *                                         tests/portability/compare.py compares platforms)
  *   run_fmu FMU_DIR threads N [T]         N instances with different parameters on N threads
  *                                         (T s each, default 0.1),
  *                                         twice, against each run alone: bit-identical; each
  *                                         thread also resets and reruns its instance
  *
- * FMU_DIR is an unzipped FMU (modelDescription.xml, binaries/linux64/<id>.so, resources/).
+ * FMU_DIR is an unzipped FMU (modelDescription.xml, binaries/linux64/<id>.so or, built for
+ * Windows, binaries/win64/<id>.dll, resources/).
  * Errors the FMU logs are printed (everything with RUN_FMU_VERBOSE set) and fail the run.
  * Exit status 0 when every check passes. Used by scripts/sanitize.sh (ASan, valgrind) and
  * scripts/soak.sh. */
@@ -331,6 +337,38 @@ static int threads(const fmu_lib *f, const fmu_info *m, int n_threads, double t_
     return rc;
 }
 
+/* ------------------------------------------------------------------ outputs */
+
+static int outputs(const fmu_lib *f, const fmu_info *m, double t_end, int n_set, char **set)
+{
+    double values[HOST_MAX_REALS];
+    int n = (int)(t_end / H + 0.5), k, rc = -1;
+    size_t i;
+    instance in;
+    if (host_open(&in, f, m, "outputs") || f->setup(in.c, fmi2False, 0.0, 0.0, fmi2False, 0.0))
+        goto done;
+    for (k = 0; k < n_set; k++) {
+        char name[128], *eq = strchr(set[k], '=');
+        if (!eq || (size_t)(eq - set[k]) >= sizeof name) {
+            host_fail(set[k]);
+            goto done;
+        }
+        memcpy(name, set[k], (size_t)(eq - set[k]));
+        name[eq - set[k]] = '\0';
+        if (host_set(&in, name, eq + 1)) goto done;
+    }
+    if (f->enter(in.c) != fmi2OK ||
+        f->exit_init(in.c) != fmi2OK || run_steps(&in, 0.0, n, NULL) ||
+        f->get_real(in.c, m->reals, m->n_reals, values) != fmi2OK)
+        goto done;
+    for (i = 0; i < m->n_reals; i++)
+        printf("%u %a %.17g\n", (unsigned)m->reals[i], values[i], values[i]);
+    rc = in.log.errors ? host_fail("errors were logged") : 0;
+done:
+    host_close(&in);
+    return rc;
+}
+
 /* ------------------------------------------------------------------ main */
 
 static int has_flag(int argc, char **argv, const char *flag)
@@ -348,7 +386,7 @@ int main(int argc, char **argv)
     int rc;
     if (argc < 3) {
         fprintf(stderr, "usage: run_fmu FMU_DIR simulate [T] | soak N [reload] [norss] | "
-                "threads N [T]\n");
+                "outputs T [NAME=VALUE ...] | threads N [T]\n");
         return 2;
     }
     if (host_read_info(&m, argv[1])) return 1;
@@ -360,6 +398,8 @@ int main(int argc, char **argv)
     } else {
         if (strcmp(argv[2], "simulate") == 0)
             rc = simulate(&f, &m, argc > 3 ? atof(argv[3]) : 0.1);
+        else if (strcmp(argv[2], "outputs") == 0 && argc > 3)
+            rc = outputs(&f, &m, atof(argv[3]), argc - 4, argv + 4);
         else if (strcmp(argv[2], "threads") == 0)
             rc = threads(&f, &m, argc > 3 ? atoi(argv[3]) : 4, argc > 4 ? atof(argv[4]) : 0.1);
         else
