@@ -10,6 +10,9 @@ ctest --test-dir build --output-on-failure -j"$(nproc)"
 # The FMU Compliance Checker on the built FMUs (0 warnings, 0 errors; skipped with a message where
 # the team's fmuCheck sources are absent).
 scripts/fmucheck.sh
+# The win64 binary: its exports and imports, the C tests and the C host under Wine, and the same
+# bits as linux64 (docs/portability.md; skipped with a message without the cross toolchain).
+scripts/win64.sh test
 # Robustness (docs/integration.md): fuzzing the C API for 60 s, the sanitizer build (ctest, C host,
 # fmpy, bad-input cases), valgrind memcheck and helgrind, soak and threads with the C host.
 scripts/fuzz.sh 60

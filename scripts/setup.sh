@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what the project needs on a fresh Debian/Ubuntu machine and builds the FMU:
-#   apt: a C compiler, cmake, SUNDIALS (static archives), python3 with venv;
+#   apt: a C compiler, cmake, SUNDIALS (static archives), python3 with venv; for the win64
+#        binary mingw-w64 and wine64 (scripts/win64.sh);
 #   .venv: the hypoid package with its pinned dependencies;
 #   build/third_party/: the Debian source packages of musl and SUNDIALS (scripts/third_party.sh).
 # Idempotent: each part is skipped when already present.
@@ -25,11 +26,16 @@ if [ ! -x .venv/bin/python ] || ! .venv/bin/python -c 'import hypoid, fmpy, pyte
 fi
 
 # Third-party sources from Debian (cached in build/third_party/): musl's portable math for the
-# FMU binary (docs/portability.md).
+# FMU binaries, SUNDIALS for the win64 one; then the win64 DLL (skipped with a message where the
+# cross toolchain cannot be installed; docs/portability.md).
 musl=""
 while IFS='=' read -r key value; do
   [ "$key" = musl ] && musl=$value
 done < <(scripts/third_party.sh)
-cmake -S . -B build -DHG_PYTHON="$PWD/.venv/bin/python" -DHG_MUSL_DIR="$musl" >/dev/null
+win64_dll=$(scripts/win64.sh build | tail -1)
+cmake -S . -B build -DHG_PYTHON="$PWD/.venv/bin/python" -DHG_MUSL_DIR="$musl" \
+  -DHG_WIN64_DLL="$win64_dll" >/dev/null
 cmake --build build -j"$(nproc)"
-echo "setup: built build/HypoidGearPair.fmu"
+echo "setup: built build/HypoidGearPair.fmu (binaries: $(python3 -c 'import sys, zipfile
+print(" ".join(sorted({n.split("/")[1] for n in zipfile.ZipFile(sys.argv[1]).namelist()
+                       if n.startswith("binaries/") and n.count("/") > 1})))' build/HypoidGearPair.fmu))"

@@ -1,0 +1,130 @@
+#!/usr/bin/env bash
+# The FMU's win64 binary, cross-compiled on Linux with Debian's mingw-w64, and its tests under
+# Wine (docs/portability.md):
+#
+#   scripts/win64.sh build   the toolchain (apt: mingw-w64, wine64), SUNDIALS 6.4.1 for Windows
+#                            (static, from Debian's source package) and build/win64/: the DLL and
+#                            the C tests; prints the DLL's path on its last line (setup.sh puts it
+#                            into the FMUs)
+#   scripts/win64.sh test    the DLL's exports and imports (objdump), the C unit tests and the C
+#                            host (tests/host) under Wine on build/HypoidGearPair.fmu, and the
+#                            linux64/win64 agreement (tests/portability/compare.py)
+#
+# Third-party pieces are cached under build/third_party/ (sources, SUNDIALS for Windows, the Wine
+# prefix), so only the first run downloads and builds them. Where the cross toolchain cannot be
+# installed (not Linux x86_64, no apt-get, no network) or HG_WIN64=0 is set, both steps say
+# "win64: SKIPPED ..." and exit 0.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+mode=${1:?usage: scripts/win64.sh build|test}
+tp=$root/build/third_party
+win=$root/build/win64
+triple=x86_64-w64-mingw32
+wine=/usr/lib/wine/wine64
+export WINEPREFIX=$tp/wineprefix WINEDEBUG=-all
+
+skip() {
+  echo "win64: SKIPPED ($mode) - $*; the FMU carries no win64 binary" >&2
+  exit 0
+}
+[ "${HG_WIN64:-1}" != 0 ] || skip "HG_WIN64=0"
+[ "$(uname -sm)" = "Linux x86_64" ] || skip "the cross build runs on Linux x86_64 only"
+
+toolchain() {
+  if ! command -v $triple-gcc >/dev/null || [ ! -x $wine ]; then
+    command -v apt-get >/dev/null || skip "mingw-w64 and wine64 are missing and there is no apt-get"
+    scripts/ensure_apt.sh --no-install-recommends mingw-w64 wine64 \
+      || skip "mingw-w64 and wine64 could not be installed with apt-get"
+  fi
+}
+
+# SUNDIALS 6.4.1 (CVODE and what it needs) as static Windows libraries, built once
+sundials_win64() {
+  local src=$1 prefix=$tp/sundials-win64
+  if [ ! -f "$prefix/lib/libsundials_cvode.a" ]; then
+    echo "win64: building SUNDIALS for Windows (static) into $prefix" >&2
+    rm -rf "$tp/sundials-win64-build"
+    cmake -S "$src" -B "$tp/sundials-win64-build" \
+      -DCMAKE_TOOLCHAIN_FILE="$root/cmake/mingw-w64-x86_64.cmake" \
+      -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_BUILD_TYPE=Release \
+      -DCMAKE_C_FLAGS_RELEASE="-O2 -ffp-contract=off" \
+      -DBUILD_SHARED_LIBS=OFF -DBUILD_STATIC_LIBS=ON -DBUILD_ARKODE=OFF -DBUILD_CVODE=ON \
+      -DBUILD_CVODES=OFF -DBUILD_IDA=OFF -DBUILD_IDAS=OFF -DBUILD_KINSOL=OFF \
+      -DBUILD_FORTRAN_MODULE_INTERFACE=OFF -DBUILD_BENCHMARKS=OFF -DEXAMPLES_ENABLE_C=OFF \
+      -DEXAMPLES_ENABLE_CXX=OFF -DEXAMPLES_INSTALL=OFF -DENABLE_MPI=OFF -DENABLE_OPENMP=OFF \
+      -DENABLE_PTHREAD=OFF -DENABLE_LAPACK=OFF -DENABLE_KLU=OFF -DSUNDIALS_PRECISION=double \
+      -DSUNDIALS_INDEX_SIZE=64 >"$tp/sundials-win64.log" 2>&1 \
+      && cmake --build "$tp/sundials-win64-build" -j"$(nproc)" >>"$tp/sundials-win64.log" 2>&1 \
+      && cmake --install "$tp/sundials-win64-build" >>"$tp/sundials-win64.log" 2>&1 \
+      || { tail -30 "$tp/sundials-win64.log" >&2; exit 1; }
+    rm -rf "$tp/sundials-win64-build"
+  fi
+  echo "$prefix"
+}
+
+fmi_include() {
+  .venv/bin/python -c "import fmpy, os; print(os.path.join(os.path.dirname(fmpy.__file__), 'c-code'))"
+}
+
+build() {
+  toolchain
+  local musl="" sundials=""
+  while IFS='=' read -r key value; do
+    case $key in musl) musl=$value ;; sundials) sundials=$value ;; esac
+  done < <(scripts/third_party.sh)
+  [ -n "$sundials" ] || skip "Debian's sundials source package could not be fetched"
+  [ -n "$musl" ] || skip "Debian's musl source package could not be fetched"
+  local prefix
+  prefix=$(sundials_win64 "$sundials")
+  cmake -S . -B "$win" -DCMAKE_TOOLCHAIN_FILE="$root/cmake/mingw-w64-x86_64.cmake" \
+    -DCMAKE_FIND_ROOT_PATH="$prefix" -DHG_PYTHON="$root/.venv/bin/python" \
+    -DHG_MUSL_DIR="$musl" >/dev/null
+  cmake --build "$win" -j"$(nproc)" >"$win/build.log" 2>&1 || { tail -40 "$win/build.log" >&2; exit 1; }
+  # the project's C host, for Windows
+  $triple-gcc -std=c99 -O2 -Wall -Wextra -Wpedantic -Werror -I"$(fmi_include)" \
+    tests/host/run_fmu.c tests/host/fmu_host.c -o "$win/run_fmu.exe" -static -lpthread
+  echo "$win/fmu/binaries/win64/HypoidGearPair.dll"
+}
+
+# Fails unless the DLL exports exactly the fmi2* functions and imports only system DLLs.
+check_dll() {
+  local dll=$1 dump exports imports bad
+  dump=$($triple-objdump -p "$dll")
+  exports=$(awk '/\[Ordinal\/Name Pointer\] Table/ { on = 1; next } on && /^[ \t]*\[/ { print $NF; next }
+                 on { on = 0 }' <<<"$dump")
+  imports=$(awk '/DLL Name:/ { print $3 }' <<<"$dump" | sort -u)
+  echo "win64: $(basename "$dll") exports $(wc -w <<<"$exports") functions:" $exports
+  echo "win64: $(basename "$dll") imports:" $imports
+  bad=$(grep -v '^fmi2' <<<"$exports" || true)
+  [ -z "$bad" ] || { echo "win64: FAILED - exports that are not fmi2*: $bad" >&2; exit 1; }
+  [ "$(wc -w <<<"$exports")" -ge 30 ] || { echo "win64: FAILED - too few exports" >&2; exit 1; }
+  bad=$(grep -viE '^(KERNEL32|msvcrt)\.dll$' <<<"$imports" || true)
+  [ -z "$bad" ] || { echo "win64: FAILED - imports other than KERNEL32/msvcrt: $bad" >&2; exit 1; }
+}
+
+run_tests() {
+  [ -f "$win/run_fmu.exe" ] || skip "build/win64 was not built (scripts/win64.sh build)"
+  local fmu=build/HypoidGearPair.fmu dir=$win/fmu-unzipped
+  rm -rf "$dir" && python3 -m zipfile -e "$fmu" "$dir"
+  [ -f "$dir/binaries/win64/HypoidGearPair.dll" ] \
+    || { echo "win64: FAILED - $fmu has no binaries/win64/HypoidGearPair.dll" >&2; exit 1; }
+  check_dll "$dir/binaries/win64/HypoidGearPair.dll"
+  [ -d "$WINEPREFIX" ] || { echo "win64: creating the Wine prefix $WINEPREFIX" >&2; $wine wineboot -i >/dev/null 2>&1; }
+  ctest --test-dir "$win" --output-on-failure -j"$(nproc)" | tail -3
+  # the C host: instantiate, initialise, a run with a state saved, serialized and restored
+  # (resource URI file:///Z:/..., a drive letter)
+  $wine "$win/run_fmu.exe" "Z:${dir//\//\\}" simulate 0.1
+  # linux64 and win64 on the same calls
+  cc -std=c99 -O2 -Wall -Wextra -Werror -I"$(fmi_include)" tests/host/run_fmu.c \
+    tests/host/fmu_host.c -o "$win/run_fmu_linux" -ldl -lpthread
+  .venv/bin/python tests/portability/compare.py --fmu-dir "$dir" --wine "$wine" \
+    --win-host "$win/run_fmu.exe" --linux-host "$win/run_fmu_linux"
+  /usr/lib/wine/wineserver -w # Wine's server ends a few seconds after its last client: wait
+}
+
+case $mode in
+  build) build ;;
+  test) toolchain; run_tests ;;
+  *) echo "usage: scripts/win64.sh build|test" >&2; exit 2 ;;
+esac
