@@ -21,6 +21,7 @@ CASES = {  # name -> NAME=VALUE settings
     "rtol 1e-10, atol 1e-14": ["rtol=1e-10", "atol=1e-14"],
     "load_mode = torque, isothermal EHL": ["load_mode=torque", "friction_model=ehl_isothermal"],
     "newmark, mean mesh": ["solver=newmark", "mesh_model=mean"],
+    "axle losses and oil sump": ["axle_losses=full", "thermal_model=sump"],
 }
 
 
