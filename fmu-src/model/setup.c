@@ -53,7 +53,7 @@ static int resolve(data_file *f, const char *resource_dir, char *err, size_t err
     size_t len = sizeof f->path;
     int n = !*u ? snprintf(f->path, len, "%s/%s", resource_dir, f->builtin)
             : hg_path_is_absolute(u) ? snprintf(f->path, len, "%s", u)
-                          : snprintf(f->path, len, "%s/%s", resource_dir, u);
+                                     : snprintf(f->path, len, "%s/%s", resource_dir, u);
     if (n < 0 || (size_t)n >= len) {
         hg_errorf(err, errlen, "data file path is too long: '%.80s...'", f->path);
         return -1;
