@@ -16,6 +16,8 @@ TOOLS = {
     "sweep": ("hypoid.sweep", "grid of steady-state points or continuation sweeps (dask, resume)"),
     "study": ("hypoid.study", "the paper's studies: tables, plots and a report (default, full)"),
     "regress": ("hypoid.regress", "compare FMU outputs with regression references (--update)"),
+    "drive-cycle": ("hypoid.drivecycle", "the axle in a car over WLTC, NEDC or a CSV cycle: losses, oil "
+                    "temperature"),
 }
 
 

@@ -1,0 +1,84 @@
+"""Benchmark of `hypoid drive-cycle`: a cycle (default WLTC class 3b, cold start at 20 degC) at
+the fast level and at the full level, their wall and CPU times, real-time factors and the axle's
+cycle energy loss and oil-temperature rise, and the fast level's error against the full one.
+Not a timed test: it writes bench/drive_cycle.json and prints a table.
+
+  .venv/bin/python bench/drive_cycle.py                    # WLTC 3b, both levels (full: slow)
+  .venv/bin/python bench/drive_cycle.py --until 589        # only its low phase
+  .venv/bin/python bench/drive_cycle.py --levels fast"""
+
+import argparse
+import json
+import pathlib
+import resource
+import sys
+import time
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+
+from hypoid import drivecycle  # noqa: E402
+
+
+def cpu_seconds():
+    r = resource.getrusage(resource.RUSAGE_SELF)
+    return r.ru_utime + r.ru_stime
+
+
+def run(cycle, level, args):
+    wall, cpu = time.perf_counter(), cpu_seconds()
+    r = drivecycle.simulate(cycle, args.fmu, args.vehicle_fmu, level, args.t_oil0 + 273.15,
+                            args.t_amb + 273.15, args.step, {}, level)
+    wall, cpu = time.perf_counter() - wall, cpu_seconds() - cpu
+    s = drivecycle.summarise(r, cycle, args.step)
+    span = cycle.t[-1] - cycle.t[0]
+    return {"level": level, "settings": drivecycle.LEVELS[level], "wall_s": wall, "cpu_s": cpu,
+            "real_time_factor_wall": span / wall, "real_time_factor_cpu": span / cpu,
+            "axle_loss_J": s["axle_loss_J"], "axle_losses_J": s["axle_losses_J"],
+            "mean_axle_efficiency": s["mean_axle_efficiency"],
+            "T_oil_rise_K": s["T_oil_degC"]["end"] - s["T_oil_degC"]["start"],
+            "speed_tracking_rms_kmh": s["speed_tracking_rms_kmh"]}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--cycle", default="wltc3")
+    ap.add_argument("--until", type=float, help="stop the cycle at this time [s]")
+    ap.add_argument("--levels", nargs="+", default=["fast", "full"])
+    ap.add_argument("--step", type=float, default=0.05)
+    ap.add_argument("--t-amb", type=float, default=20.0)
+    ap.add_argument("--t-oil0", type=float, default=20.0)
+    ap.add_argument("--fmu", default=str(ROOT / "build" / "HypoidGearPair.fmu"))
+    ap.add_argument("--vehicle-fmu", default=str(drivecycle.DEFAULT_VEHICLE_FMU))
+    ap.add_argument("--json", default=str(ROOT / "bench" / "drive_cycle.json"))
+    args = ap.parse_args()
+    cycle = drivecycle.load_cycle(args.cycle)
+    if args.until:
+        keep = cycle.t <= args.until
+        cycle = drivecycle.Cycle(f"{cycle.name}_to_{args.until:g}s", cycle.t[keep],
+                                 cycle.v[keep], [p for p in cycle.phases if p[1] < args.until],
+                                 cycle.source)
+    results = [run(cycle, level, args) for level in args.levels]
+    if len(results) == 2:
+        fast, full = results
+        fast["loss_error_vs_full"] = fast["axle_loss_J"] / full["axle_loss_J"] - 1.0
+        fast["T_oil_rise_error_K"] = fast["T_oil_rise_K"] - full["T_oil_rise_K"]
+    out = {"cycle": cycle.name, "duration_s": float(cycle.t[-1] - cycle.t[0]),
+           "step_s": args.step, "T_amb_degC": args.t_amb, "T_oil0_degC": args.t_oil0,
+           "machine": "2 cores shared with other jobs (wall time depends on the load; see cpu_s)",
+           "results": results}
+    pathlib.Path(args.json).write_text(json.dumps(out, indent=2) + "\n")
+    print(f"{cycle.name} ({out['duration_s']:.0f} s), cold start {args.t_oil0:g} degC")
+    print(f"{'level':<6} {'wall s':>8} {'cpu s':>8} {'RTF(cpu)':>9} {'loss kJ':>9} "
+          f"{'eta %':>7} {'dT_oil K':>9}")
+    for r in results:
+        print(f"{r['level']:<6} {r['wall_s']:8.1f} {r['cpu_s']:8.1f} "
+              f"{r['real_time_factor_cpu']:9.1f} {r['axle_loss_J'] / 1e3:9.2f} "
+              f"{100 * r['mean_axle_efficiency']:7.2f} {r['T_oil_rise_K']:9.2f}")
+    if len(results) == 2:
+        print(f"fast vs full: loss {100 * results[0]['loss_error_vs_full']:+.2f} %, "
+              f"oil rise {results[0]['T_oil_rise_error_K']:+.2f} K")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,475 @@
+"""Drive a passenger car with the hypoid axle over a speed cycle and report what the axle costs:
+the energy at the wheels, the axle's losses by part (mesh, churning, bearings, seals) and by
+cycle phase, the mean axle efficiency and the oil temperature, from a cold start and from a warm
+axle, with the difference.
+
+The scene (docs/axle.md): the gear FMU (load_mode = torque, axle_losses = full, thermal_model =
+sump) carries the vehicle's inertia at its wheel end (I_w += m r^2 + J_wheels) and the
+half-shaft compliance (k_t2 = k_hs); the vehicle FMU (build/LongitudinalVehicle.fmu, coupling =
+2) returns the road load and the brake torque at the wheel speed; a driver (a PI speed
+controller with feed-forward of the cycle's acceleration) sets the propeller-shaft torque T_s
+and the brakes. Both FMUs run in fmpy's co-simulation master (Jacobi, communication step
+--step). Cycles: WLTC class 3b and NEDC from the European Commission JRC's `wltp` package
+(PyPI wltp 0.1.2a0, wltp/cycles/class3.py and nedc.py), or a CSV file with the columns
+`time` (s, increasing) and `speed` (km/h), optionally `phase` (a name per row).
+
+Examples:
+  hypoid drive-cycle                              WLTC class 3, cold (20 degC) and warm (80 degC)
+  hypoid drive-cycle --cycle nedc --no-warm
+  hypoid drive-cycle --cycle my_route.csv --t-amb 5 --set gear_set=2
+  hypoid drive-cycle --level full                 the paper's full model (slow: minutes)
+
+Writes <out>/<name>/: summary.json, summary.md, cold.csv (and warm.csv), drive_cycle.png; the
+folder appears only when the run is complete."""
+
+import json
+import math
+import os
+import pathlib
+import shutil
+import tempfile
+import time
+from dataclasses import asdict, dataclass, field
+
+import numpy as np
+
+from hypoid import cliargs
+from hypoid.instance import Instance
+from hypoid.paths import user_path
+
+KMH = 1 / 3.6
+ZERO_C = 273.15
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+DEFAULT_VEHICLE_FMU = ROOT / "build" / "LongitudinalVehicle.fmu"
+
+# The fidelity levels of the gear FMU for vehicle energy (docs/work-precision.md: "vehicle
+# energy, with cold starts": rigid mesh, BDF at rtol 1e-4; full: the paper's model).
+LEVELS = {
+    "fast": {"mesh_model": "rigid", "friction_model": "ehl_thermal", "rtol": 1e-4},
+    "full": {"mesh_model": "varying", "friction_model": "ehl_thermal", "rtol": 1e-6},
+}
+
+GEAR_OUT = ["w_w", "w_p", "T_oil", "P_loss", "P_loss_viscous", "P_churn", "P_bearings",
+            "P_seals", "P_axle", "P_in_axle", "eta_axle", "E_in", "E_out", "E_friction",
+            "E_churn", "E_bearings", "E_seals", "Q_housing", "Q_dot_housing"]
+VEHICLE_OUT = ["T_hs", "v", "x", "E_road", "E_brake", "E_grade"]
+PARTS = {"mesh": "E_friction", "churning": "E_churn", "bearings": "E_bearings",
+         "seals": "E_seals"}
+
+
+# ---------------------------------------------------------------------------- cycles
+@dataclass
+class Cycle:
+    name: str
+    t: np.ndarray        # s
+    v: np.ndarray        # m/s
+    phases: list         # [(name, t_start, t_end)]
+    source: str
+
+    def speed(self, t):
+        return float(np.interp(t, self.t, self.v))
+
+
+WLTC3_PHASES = ("low", "medium", "high", "extra-high")
+
+
+def builtin_cycle(name):
+    """WLTC class 3b or NEDC from the `wltp` package (speeds in km/h at 1 Hz)."""
+    try:
+        from wltp.cycles import class3, nedc
+    except ImportError as e:
+        raise cliargs.UsageError(f"--cycle {name}: the wltp package is missing ({e}); "
+                                 "install the project with scripts/setup.sh") from None
+    if name == "wltc3":
+        data, names = class3.class_data_b(), WLTC3_PHASES
+        source = "WLTC class 3b, wltp 0.1.2a0 (European Commission JRC), wltp/cycles/class3.py"
+    else:
+        data, names = nedc.cycle_data(), ("ECE (urban)", "EUDC (extra-urban)")
+        source = "NEDC, wltp 0.1.2a0 (European Commission JRC), wltp/cycles/nedc.py"
+    v = np.asarray(data["cycle"], float) * KMH
+    t = np.arange(len(v), dtype=float)
+    phases = [(n, float(a), float(b)) for n, (a, b) in zip(names, data["parts"])]
+    # the parts are [first, last] second: close the gaps between them
+    phases = [(n, a, phases[k + 1][1] if k + 1 < len(phases) else t[-1])
+              for k, (n, a, _) in enumerate(phases)]
+    return Cycle(name, t, v, phases, source)
+
+
+def read_csv_cycle(path):
+    """A user's cycle: columns time [s] (strictly increasing, from >= 0) and speed [km/h]
+    (finite, >= 0), optionally phase. Every problem is one UsageError naming file, line and
+    value."""
+    p = pathlib.Path(path)
+    try:
+        lines = p.read_text().splitlines()
+    except (OSError, UnicodeDecodeError) as e:
+        raise cliargs.UsageError(f"--cycle {p}: cannot read it ({e})") from None
+    rows = [(n, line) for n, line in enumerate(lines, 1) if line.strip() and
+            not line.lstrip().startswith("#")]
+    if not rows:
+        raise cliargs.UsageError(f"--cycle {p}: the file is empty")
+    header = [h.strip().lower() for h in rows[0][1].split(",")]
+    missing = [c for c in ("time", "speed") if c not in header]
+    if missing:
+        raise cliargs.UsageError(f"--cycle {p}: line {rows[0][0]}: missing column(s) "
+                                 f"{', '.join(missing)}; the header must name time (s) and "
+                                 f"speed (km/h), optionally phase (found: {', '.join(header)})")
+    it, iv = header.index("time"), header.index("speed")
+    ip = header.index("phase") if "phase" in header else None
+    t, v, ph = [], [], []
+    for n, line in rows[1:]:
+        cells = [c.strip() for c in line.split(",")]
+        if len(cells) != len(header):
+            raise cliargs.UsageError(f"--cycle {p}: line {n}: {len(cells)} values for "
+                                     f"{len(header)} columns")
+        try:
+            tt, vv = float(cells[it]), float(cells[iv])
+        except ValueError:
+            raise cliargs.UsageError(f"--cycle {p}: line {n}: time {cells[it]!r} or speed "
+                                     f"{cells[iv]!r} is not a number") from None
+        if not (math.isfinite(tt) and math.isfinite(vv)):
+            raise cliargs.UsageError(f"--cycle {p}: line {n}: time {tt} s or speed {vv} km/h "
+                                     "is not finite")
+        if vv < 0 or tt < 0:
+            raise cliargs.UsageError(f"--cycle {p}: line {n}: time {tt} s and speed {vv} km/h "
+                                     "must not be negative")
+        if t and tt <= t[-1]:
+            raise cliargs.UsageError(f"--cycle {p}: line {n}: time {tt} s does not increase "
+                                     f"(the row before has {t[-1]} s)")
+        t.append(tt)
+        v.append(vv * KMH)
+        ph.append(cells[ip] if ip is not None else "all")
+    if len(t) < 2:
+        raise cliargs.UsageError(f"--cycle {p}: at least two rows of time and speed are needed")
+    phases = []
+    for k, name in enumerate(ph):
+        if not phases or phases[-1][0] != name:
+            phases.append([name, t[k], t[k]])
+        phases[-1][2] = t[min(k + 1, len(t) - 1)]
+    return Cycle(p.stem, np.array(t), np.array(v), [tuple(x) for x in phases], f"file {p}")
+
+
+def load_cycle(text):
+    if text in ("wltc3", "nedc"):
+        return builtin_cycle(text)
+    if not text.lower().endswith(".csv"):
+        raise cliargs.UsageError(f"--cycle {text!r}: give wltc3, nedc or a .csv file")
+    return read_csv_cycle(user_path(text))
+
+
+# ---------------------------------------------------------------------------- vehicle, driver
+@dataclass
+class Vehicle:
+    """A mid-size passenger car (the vehicle FMU's defaults, docs/cosimulation.md); v_eps is
+    wider than the FMU's default so that the rolling resistance and brakes stay smooth over a
+    long communication step at standstill (docs/axle.md)."""
+    m: float = 1500.0        # kg
+    r_dyn: float = 0.3       # m
+    J_wheels: float = 3.0    # kg m^2
+    c_rr: float = 0.012
+    CdA: float = 0.7         # m^2
+    rho_air: float = 1.2     # kg/m^3
+    k_hs: float = 1.2e4      # N m/rad, both half-shafts and tyres
+    v_eps: float = 0.5       # m/s
+    air_factor: float = 0.5  # air speed over the housing / vehicle speed (assumed)
+
+    def fmu_values(self):
+        return {"m": self.m, "r_dyn": self.r_dyn, "J_wheels": self.J_wheels, "c_rr": self.c_rr,
+                "CdA": self.CdA, "rho_air": self.rho_air, "k_hs": self.k_hs,
+                "v_eps": self.v_eps, "coupling": 2.0}
+
+    def road_force(self, v):
+        return (self.c_rr * self.m * 9.81 * math.tanh(v / self.v_eps)
+                + 0.5 * self.rho_air * self.CdA * v * abs(v))
+
+
+@dataclass
+class Driver:
+    """Speed tracking: feed-forward of the cycle's acceleration and road load, PI on the speed
+    error; negative demand goes to engine braking (down to T_s_min) and then to the brakes."""
+    vehicle: Vehicle
+    ratio: float             # N_g / N_p
+    J_wheel: float           # all inertia referred to the wheel [kg m^2]
+    k_p: float = 1.0         # 1/s
+    k_i: float = 0.1         # 1/s^2
+    T_s_max: float = 600.0   # N m at the propeller shaft
+    T_s_min: float = -20.0   # engine braking at the propeller shaft, in gear (v > 3 m/s)
+    integral: float = field(default=0.0, init=False)
+
+    def command(self, v_now, v_next, v, h):
+        """(T_s, T_brake) for the step towards v_next (the cycle's speed at the step's end)."""
+        veh, r = self.vehicle, self.vehicle.r_dyn
+        if v_next <= 0.0 and v < 0.3:
+            self.integral = 0.0
+            return 0.0, 300.0  # standing: no drive, brakes held
+        e = v_now - v
+        self.integral = float(np.clip(self.integral + e * h, -2.0, 2.0))
+        a = (v_next - v_now) / h + self.k_p * e + self.k_i * self.integral
+        T_wheel = self.J_wheel / r * a + r * veh.road_force(v_now)
+        T_s = T_wheel / self.ratio
+        floor = self.T_s_min if v > 3.0 else 0.0
+        if T_s >= floor:
+            return min(T_s, self.T_s_max), 0.0
+        return floor, floor * self.ratio - T_wheel
+
+
+# ---------------------------------------------------------------------------- the run
+@dataclass
+class Run:
+    label: str
+    T_oil0: float            # K
+    rows: dict               # name -> array over the steps (time first)
+    wall: float              # s
+
+
+def gear_start(level, vehicle, I_w0, T_oil0, T_amb, extra):
+    values = dict(LEVELS[level])
+    values.update(load_mode="torque", axle_losses="full", thermal_model="sump", T_s=0.0,
+                  T_w=0.0, w_p0=0.0, T_oil0=T_oil0, T_amb=T_amb, T_bath=T_oil0,
+                  I_w=I_w0 + vehicle.m * vehicle.r_dyn ** 2 + vehicle.J_wheels,
+                  k_t2=vehicle.k_hs)
+    values.update(extra)
+    return values
+
+
+def simulate(cycle, gear_fmu, vehicle_fmu, level, T_oil0, T_amb, h, extra, label,
+             vehicle=None):
+    """One co-simulation over the cycle; the recorded outputs at every communication point."""
+    vehicle = vehicle or Vehicle()
+    wall = time.perf_counter()
+    with Instance(gear_fmu, name="gear") as gear, Instance(vehicle_fmu, name="vehicle") as car:
+        I_w0 = gear.table.variable("I_w").start
+        gear.start(gear_start(level, vehicle, float(I_w0), T_oil0, T_amb, extra))
+        car.start(vehicle.fmu_values())
+        ratio = float(gear.get("ratio"))
+        J = gear.reals(["I_w"])[0] + gear.get("I_g") + (gear.get("I_p") + gear.get("I_s")) \
+            * ratio ** 2
+        driver = Driver(vehicle, ratio, J)
+        n = int(round((cycle.t[-1] - cycle.t[0]) / h))
+        names = ["time", "v_target", "T_s", "T_brake"] + GEAR_OUT + VEHICLE_OUT
+        rec = np.empty((n + 1, len(names)))
+        g_refs, v_refs = [gear.ref(x) for x in GEAR_OUT], [car.ref(x) for x in VEHICLE_OUT]
+        i_ww, i_ths, i_v = GEAR_OUT.index("w_w"), VEHICLE_OUT.index("T_hs"), VEHICLE_OUT.index("v")
+        t, T_s, T_b = cycle.t[0], 0.0, 0.0
+        gv = gear._call(gear.slave.getReal, g_refs)
+        vv = car._call(car.slave.getReal, v_refs)
+        for k in range(n + 1):
+            v_now = cycle.speed(t)
+            rec[k] = [t, v_now, T_s, T_b, *gv, *vv]
+            if k == n:
+                break
+            T_s, T_b = driver.command(v_now, cycle.speed(t + h), vv[i_v], h)
+            gear._call(gear.slave.setReal, [gear.ref("T_s"), gear.ref("T_w"), gear.ref("v_air")],
+                       [T_s, vv[i_ths], vehicle.air_factor * abs(vv[i_v])])
+            car._call(car.slave.setReal, [car.ref("w_w"), car.ref("T_brake")], [gv[i_ww], T_b])
+            gear.do_step(t, h)
+            car.do_step(t, h)
+            t = cycle.t[0] + (k + 1) * h
+            gv = gear._call(gear.slave.getReal, g_refs)
+            vv = car._call(car.slave.getReal, v_refs)
+    rows = {name: rec[:, j] for j, name in enumerate(names)}
+    return Run(label, T_oil0, rows, time.perf_counter() - wall)
+
+
+# ---------------------------------------------------------------------------- results
+def energy_at(rows, name, t):
+    return float(np.interp(t, rows["time"], rows[name]))
+
+
+def summarise(run, cycle, h):
+    r = run.rows
+    dE_out = np.diff(r["E_out"])
+    P_in = r["P_in_axle"]
+    E_through = float(np.sum(0.5 * (P_in[1:] + P_in[:-1])) * h)
+    losses = {part: float(r[name][-1]) for part, name in PARTS.items()}
+    E_axle = sum(losses.values())
+    phases = []
+    for name, a, b in cycle.phases:
+        d = {part: energy_at(r, n, b) - energy_at(r, n, a) for part, n in PARTS.items()}
+        sel = (r["time"] >= a) & (r["time"] <= b)
+        phases.append({"phase": name, "t_start_s": a, "t_end_s": b,
+                       "distance_km": (energy_at(r, "x", b) - energy_at(r, "x", a)) / 1e3,
+                       "losses_J": d, "loss_J": sum(d.values()),
+                       "T_oil_end_degC": energy_at(r, "T_oil", b) - ZERO_C,
+                       "v_tracking_rms_kmh": float(np.sqrt(np.mean(
+                           (r["v"][sel] - r["v_target"][sel]) ** 2)) / KMH)})
+    return {
+        "label": run.label, "T_oil0_degC": run.T_oil0 - ZERO_C, "wall_s": run.wall,
+        "distance_km": float(r["x"][-1]) / 1e3,
+        "wheel_energy_J": {"traction": float(np.sum(dE_out[dE_out > 0])),
+                           "coast_and_braking_back": float(-np.sum(dE_out[dE_out < 0]))},
+        "road_J": float(r["E_road"][-1]), "brakes_J": float(r["E_brake"][-1]),
+        "axle_losses_J": losses, "axle_loss_J": E_axle,
+        "mesh_viscous_J": float(np.sum(0.5 * (r["P_loss_viscous"][1:]
+                                              + r["P_loss_viscous"][:-1])) * h),
+        "energy_into_axle_J": E_through,
+        "mean_axle_efficiency": 1.0 - E_axle / E_through if E_through > 0 else float("nan"),
+        "T_oil_degC": {"start": float(r["T_oil"][0]) - ZERO_C, "end": float(r["T_oil"][-1])
+                       - ZERO_C, "max": float(np.max(r["T_oil"])) - ZERO_C},
+        "heat_to_air_J": float(r["Q_housing"][-1]),
+        "speed_tracking_rms_kmh": float(np.sqrt(np.mean((r["v"] - r["v_target"]) ** 2)) / KMH),
+        "phases": phases,
+    }
+
+
+def difference(cold, warm):
+    """warm - cold of the headline figures."""
+    d = {part: warm["axle_losses_J"][part] - cold["axle_losses_J"][part] for part in PARTS}
+    return {"axle_losses_J": d, "axle_loss_J": warm["axle_loss_J"] - cold["axle_loss_J"],
+            "axle_loss_relative": warm["axle_loss_J"] / cold["axle_loss_J"] - 1.0,
+            "mean_axle_efficiency_points": 100 * (warm["mean_axle_efficiency"]
+                                                  - cold["mean_axle_efficiency"]),
+            "T_oil_end_degC": warm["T_oil_degC"]["end"] - cold["T_oil_degC"]["end"]}
+
+
+def markdown(meta, runs, diff):
+    kj = 1e-3
+    lines = [f"# hypoid drive-cycle: {meta['cycle']}", "", f"Cycle: {meta['source']}; "
+             f"level {meta['level']}; step {meta['step_s']} s; air {meta['T_amb_degC']:.0f} degC.",
+             "", "| | " + " | ".join(s["label"] for s in runs) + " |",
+             "|---|" + "---|" * len(runs)]
+
+    def row(name, fn):
+        lines.append(f"| {name} | " + " | ".join(fn(s) for s in runs) + " |")
+
+    row("oil at start / end / max (degC)", lambda s: "{start:.1f} / {end:.1f} / {max:.1f}".format(
+        **s["T_oil_degC"]))
+    row("distance (km)", lambda s: f"{s['distance_km']:.2f}")
+    row("energy at the wheels, traction (kJ)",
+        lambda s: f"{s['wheel_energy_J']['traction'] * kj:.0f}")
+    row("energy into the axle (kJ)", lambda s: f"{s['energy_into_axle_J'] * kj:.0f}")
+    for part in PARTS:
+        row(f"loss: {part} (kJ)", lambda s, p=part: f"{s['axle_losses_J'][p] * kj:.1f}")
+    row("axle loss (kJ)", lambda s: f"{s['axle_loss_J'] * kj:.1f}")
+    row("mean axle efficiency (%)", lambda s: f"{100 * s['mean_axle_efficiency']:.2f}")
+    row("speed tracking RMS (km/h)", lambda s: f"{s['speed_tracking_rms_kmh']:.2f}")
+    row("wall time (s)", lambda s: f"{s['wall_s']:.1f}")
+    lines += ["", "Losses by phase (kJ): mesh / churning / bearings / seals = total", ""]
+    for s in runs:
+        lines.append(f"- {s['label']}: " + "; ".join(
+            f"{p['phase']}: " + " / ".join(f"{p['losses_J'][x] * kj:.1f}" for x in PARTS)
+            + f" = {p['loss_J'] * kj:.1f}" for p in s["phases"]))
+    if diff:
+        lines += ["", f"Warm minus cold: axle loss {diff['axle_loss_J'] * kj:+.1f} kJ "
+                  f"({100 * diff['axle_loss_relative']:+.1f} %), mean efficiency "
+                  f"{diff['mean_axle_efficiency_points']:+.2f} %-points; "
+                  + ", ".join(f"{p} {diff['axle_losses_J'][p] * kj:+.1f} kJ" for p in PARTS)]
+    return "\n".join(lines) + "\n"
+
+
+def write_csv(run, path):
+    names = list(run.rows)
+    np.savetxt(path, np.column_stack([run.rows[n] for n in names]), delimiter=",",
+               header=",".join(names), comments="", fmt="%.9g")
+
+
+def plot(cycle, runs, path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(4, 1, figsize=(10, 11), sharex=True)
+    r0 = runs[0].rows
+    ax[0].plot(r0["time"], r0["v_target"] / KMH, "k-", lw=0.8, label="cycle")
+    ax[0].plot(r0["time"], r0["v"] / KMH, "C3--", lw=0.8, label=f"vehicle ({runs[0].label})")
+    ax[0].set_ylabel("speed (km/h)")
+    for name, a, _ in cycle.phases:
+        for a_ in ax:
+            a_.axvline(a, color="0.8", lw=0.6)
+        ax[0].text(a, ax[0].get_ylim()[1] * 0.92, " " + name, fontsize=8)
+    for k, run in enumerate(runs):
+        ax[1].plot(run.rows["time"], run.rows["T_oil"] - ZERO_C, f"C{k}", label=run.label)
+    ax[1].set_ylabel("oil temperature (°C)")
+    r = runs[0].rows
+    for part, name in zip(PARTS, ["P_loss", "P_churn", "P_bearings", "P_seals"]):
+        ax[2].plot(r["time"], r[name], lw=0.6, label=part)
+    ax[2].set_ylabel(f"loss power ({runs[0].label}, W)")
+    for k, run in enumerate(runs):
+        total = sum(run.rows[n] for n in PARTS.values())
+        ax[3].plot(run.rows["time"], total * 1e-3, f"C{k}", label=f"{run.label}: all parts")
+        ax[3].plot(run.rows["time"], run.rows["E_friction"] * 1e-3, f"C{k}:",
+                   label=f"{run.label}: mesh")
+    ax[3].set_ylabel("axle loss energy (kJ)")
+    ax[3].set_xlabel("time (s)")
+    for a_ in ax:
+        a_.legend(fontsize=8, loc="upper left")
+        a_.grid(alpha=0.3)
+    fig.suptitle(f"{cycle.name}: the axle from a cold start and warm")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+# ---------------------------------------------------------------------------- command line
+def _parser():
+    ap = cliargs.Parser("hypoid drive-cycle", __doc__)
+    ap.add_fmu()
+    ap.add_argument("--vehicle-fmu", type=user_path, default=str(DEFAULT_VEHICLE_FMU),
+                    help="the vehicle FMU (default: build/LongitudinalVehicle.fmu)")
+    ap.add_argument("--cycle", default="wltc3", help="wltc3 (default), nedc or a CSV file")
+    ap.add_argument("--level", choices=sorted(LEVELS), default="fast",
+                    help="gear FMU fidelity: fast (rigid mesh, rtol 1e-4; default) or full")
+    ap.add_argument("--step", type=float, default=0.05,
+                    help="communication step of the co-simulation in s (0.05)")
+    ap.add_argument("--t-amb", type=float, default=20.0, help="air temperature in degC (20)")
+    ap.add_argument("--t-oil0", type=float, help="oil at the start in degC (default: --t-amb)")
+    ap.add_argument("--warm", type=float, default=80.0,
+                    help="oil at the start of the warm run in degC (80)")
+    ap.add_argument("--no-warm", action="store_true", help="only the cold start")
+    ap.add_argument("--out", type=user_path, default=user_path("results"),
+                    help="parent folder of the run's folder (default: ./results)")
+    ap.add_argument("--name", help="the run's folder name (default: drive_cycle_<cycle>)")
+    ap.add_set()
+    return ap
+
+
+def check_args(args):
+    if not 1e-3 <= args.step <= 1.0:
+        raise cliargs.UsageError(f"--step {args.step}: between 0.001 and 1 s")
+    for name in ("t_amb", "t_oil0", "warm"):
+        value = getattr(args, name)
+        if value is not None and not -70.0 <= value <= 170.0:
+            raise cliargs.UsageError(f"--{name.replace('_', '-')} {value}: a temperature "
+                                     "between -70 and 170 degC")
+
+
+def main(argv):
+    args = _parser().parse_args(argv)
+    check_args(args)
+    extra = cliargs.parse_set(args.set)
+    cycle = load_cycle(args.cycle)
+    gear_fmu, vehicle_fmu = cliargs.fmu_path(args.fmu), cliargs.fmu_path(args.vehicle_fmu)
+    T_amb = args.t_amb + ZERO_C
+    starts = [("cold", (args.t_oil0 if args.t_oil0 is not None else args.t_amb) + ZERO_C)]
+    if not args.no_warm:
+        starts.append(("warm", args.warm + ZERO_C))
+    runs = [simulate(cycle, gear_fmu, vehicle_fmu, args.level, T0, T_amb, args.step, extra,
+                     label) for label, T0 in starts]
+    summaries = [summarise(run, cycle, args.step) for run in runs]
+    diff = difference(summaries[0], summaries[1]) if len(summaries) == 2 else None
+    meta = {"cycle": cycle.name, "source": cycle.source, "level": args.level,
+            "gear_fmu_settings": LEVELS[args.level], "step_s": args.step,
+            "T_amb_degC": args.t_amb, "set": extra, "vehicle": asdict(Vehicle())}
+    text = markdown(meta, summaries, diff)
+    name = args.name or f"drive_cycle_{cycle.name}"
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    final = out / name
+    if final.exists():
+        raise cliargs.UsageError(f"{final} exists: give another --name or remove it")
+    tmp = pathlib.Path(tempfile.mkdtemp(dir=out, prefix=f".{name}."))
+    try:
+        (tmp / "summary.json").write_text(json.dumps(
+            {"meta": meta, "runs": summaries, "warm_minus_cold": diff}, indent=2) + "\n")
+        (tmp / "summary.md").write_text(text)
+        for run in runs:
+            write_csv(run, tmp / f"{run.label}.csv")
+        plot(cycle, runs, tmp / "drive_cycle.png")
+        os.replace(tmp, final)
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+    print(text, end="")
+    print(f"hypoid drive-cycle: wrote {final}/ (summary.json, summary.md, "
+          + ", ".join(f"{r.label}.csv" for r in runs) + ", drive_cycle.png)")
+    return 0

@@ -1,0 +1,126 @@
+"""`hypoid drive-cycle` and the vehicle FMU's road-load coupling (docs/axle.md): the cycles from
+the wltp package, the CSV checks (one line, exit 2, nothing written), a short cycle whose energy
+and heat balances close, and the vehicle FMU's road load against its formula."""
+
+import json
+import math
+import pathlib
+
+import numpy as np
+import pytest
+
+from hypoid import cli, drivecycle
+from hypoid.instance import Instance
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+VEHICLE_FMU = ROOT / "build" / "LongitudinalVehicle.fmu"
+
+
+def test_wltc3_and_nedc_come_from_the_wltp_package():
+    w = drivecycle.builtin_cycle("wltc3")
+    assert len(w.t) == 1801 and w.t[-1] == 1800.0
+    assert np.sum(w.v) / drivecycle.KMH == pytest.approx(83758.6, abs=0.05)  # wltp's checksum
+    assert [p[0] for p in w.phases] == ["low", "medium", "high", "extra-high"]
+    assert max(w.v) / drivecycle.KMH == pytest.approx(131.3)
+    n = drivecycle.builtin_cycle("nedc")
+    assert n.t[-1] == 1179.0 and max(n.v) / drivecycle.KMH == pytest.approx(120.0)
+
+
+def run_cli(argv, capsys):
+    code = cli.main(["drive-cycle"] + argv)
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+@pytest.mark.parametrize("text, words", [
+    ("t,v\n0,0\n1,5\n", ["missing column(s) time, speed"]),
+    ("time,speed\n0,0\n1,5\n1,6\n", ["line 4", "does not increase"]),
+    ("time,speed\n0,0\n1,nan\n", ["line 3", "not finite"]),
+    ("time,speed\n0,0\n1,abc\n", ["line 3", "not a number"]),
+    ("time,speed\n0,0\n1,-3\n", ["line 3", "negative"]),
+    ("time,speed\n0,0\n", ["two rows"]),
+])
+def test_bad_cycle_files_give_one_line_and_write_nothing(tmp_path, capsys, text, words):
+    f = tmp_path / "cycle.csv"
+    f.write_text(text)
+    out = tmp_path / "out"
+    code, _, err = run_cli(["--cycle", str(f), "--out", str(out), "--no-warm"], capsys)
+    assert code == 2 and len(err.strip().splitlines()) == 1
+    assert err.startswith("hypoid drive-cycle: ") and "Traceback" not in err
+    for w in words:
+        assert w in err
+    assert not out.exists() or not any(out.iterdir())
+
+
+def test_bad_options_are_refused(tmp_path, capsys):
+    code, _, err = run_cli(["--cycle", "wltc4", "--out", str(tmp_path)], capsys)
+    assert code == 2 and "wltc3, nedc or a .csv" in err
+    code, _, err = run_cli(["--step", "5", "--out", str(tmp_path)], capsys)
+    assert code == 2 and "--step" in err
+
+
+@pytest.fixture(scope="module")
+def short_cycle(tmp_path_factory):
+    """A 40 s urban piece: launch to 50 km/h, cruise, brake to a stop, stand."""
+    d = tmp_path_factory.mktemp("dc")
+    t = [0, 2, 10, 20, 30, 36, 40]
+    v = [0, 0, 50, 50, 0, 0, 0]
+    lines = ["time,speed,phase"] + [f"{a},{b},{'go' if a < 20 else 'stop'}" for a, b in zip(t, v)]
+    (d / "piece.csv").write_text("\n".join(lines) + "\n")
+    code = cli.main(["drive-cycle", "--cycle", str(d / "piece.csv"), "--out", str(d),
+                     "--name", "piece"])
+    assert code == 0
+    folder = d / "piece"
+    s = json.loads((folder / "summary.json").read_text())
+    cold = np.genfromtxt(folder / "cold.csv", delimiter=",", names=True)
+    return folder, s, cold
+
+
+def test_short_cycle_writes_everything_and_tracks_the_speed(short_cycle):
+    folder, s, cold = short_cycle
+    for f in ("summary.json", "summary.md", "cold.csv", "warm.csv", "drive_cycle.png"):
+        assert (folder / f).stat().st_size > 0
+    c, w = s["runs"]
+    assert c["speed_tracking_rms_kmh"] < 1.0
+    assert c["distance_km"] == pytest.approx((8 / 2 + 10 + 10 / 2) * 50 / 3.6 / 1e3, rel=0.03)
+    assert [p["phase"] for p in c["phases"]] == ["go", "stop"]
+    # the parts add up, and the phases add up to the cycle
+    assert sum(c["axle_losses_J"].values()) == pytest.approx(c["axle_loss_J"], rel=1e-12)
+    assert sum(p["loss_J"] for p in c["phases"]) == pytest.approx(c["axle_loss_J"], rel=1e-6)
+    # cold oil costs more; the warm axle cools towards the air
+    assert w["axle_loss_J"] < c["axle_loss_J"]
+    assert c["T_oil_degC"]["end"] > c["T_oil_degC"]["start"]
+    assert w["T_oil_degC"]["end"] < w["T_oil_degC"]["start"]
+    assert s["warm_minus_cold"]["axle_loss_J"] == pytest.approx(
+        w["axle_loss_J"] - c["axle_loss_J"])
+    assert 0.8 < c["mean_axle_efficiency"] < 1.0
+
+
+def test_short_cycle_heat_and_energy_balances_close(short_cycle):
+    """C_sump (T_oil - T_oil0) = axle losses - heat to the air (the sump's identity, 1e-6 of the
+    energy through the axle); what the axle gave the wheels went into the road, the brakes and
+    the vehicle's kinetic energy (zero at both ends), within the sampling of the energy sums."""
+    _, s, r = short_cycle
+    losses = r["E_friction"] + r["E_churn"] + r["E_bearings"] + r["E_seals"]
+    heat = 12000.0 * (r["T_oil"] - r["T_oil"][0])
+    through = s["runs"][0]["energy_into_axle_J"]
+    assert np.max(np.abs(heat - (losses - r["Q_housing"]))) < 1e-6 * through
+    E_wheels = r["E_out"][-1]  # the vehicle is at rest at both ends
+    assert E_wheels == pytest.approx(r["E_road"][-1] + r["E_brake"][-1], rel=0.02)
+
+
+def test_vehicle_road_load_coupling_matches_its_formula():
+    """coupling = 2: T_hs = r (c_rr m g tanh(v/v_eps) + rho/2 CdA v^2) + T_brake tanh(v/v_eps),
+    and E_in = E_road + E_brake (+ E_grade)."""
+    with Instance(VEHICLE_FMU, name="car") as car:
+        car.start({"coupling": 2.0, "v_eps": 0.5})
+        w, T_b = 50.0, 120.0
+        car.set_many({"w_w": w, "T_brake": T_b})
+        rows = car.record(1.0, 0.1, ["T_hs", "v", "E_in", "E_road", "E_brake", "E_kin", "x"])
+    v = 0.3 * w
+    expect = 0.3 * (0.012 * 1500 * 9.81 * math.tanh(v / 0.5) + 0.5 * 1.2 * 0.7 * v * v) \
+        + T_b * math.tanh(v / 0.5)
+    assert rows[-1, 0] == pytest.approx(expect, rel=1e-12)
+    assert rows[-1, 1] == pytest.approx(v) and rows[-1, 6] == pytest.approx(v * 1.0, rel=1e-9)
+    assert rows[-1, 2] == pytest.approx(rows[-1, 3] + rows[-1, 4], rel=1e-9)
+    assert rows[-1, 5] == 0.0  # the vehicle's inertia is the driveline model's
