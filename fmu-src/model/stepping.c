@@ -130,13 +130,20 @@ void hg_stepping_contact_event(hg_runtime *rt, const hg_setup *s, const int *dir
     }
 }
 
+/* RMS over a window from the integral of the square; the integral's own error can leave it a
+ * hair below zero when the efficiency is 0 throughout (losses with no power entering). */
+static double rms_of(double integral, double T)
+{
+    return sqrt(fmax(integral, 0.0) / T);
+}
+
 void hg_stepping_window_event(hg_runtime *rt, const hg_logger *lg)
 {
     double T = rt->t - rt->win_t0;
     if (T > 0.0) {
-        rt->eta_cycle = sqrt((rt->y[HG_Y_ETA2] - rt->win_eta2_0) / T);
+        rt->eta_cycle = rms_of(rt->y[HG_Y_ETA2] - rt->win_eta2_0, T);
         rt->P_loss_cycle = (rt->y[HG_Y_E_FRIC] - rt->win_efric_0) / T;
-        rt->eta_axle_cycle = sqrt((rt->y[HG_Y_ETA_AXLE2] - rt->win_eta_axle2_0) / T);
+        rt->eta_axle_cycle = rms_of(rt->y[HG_Y_ETA_AXLE2] - rt->win_eta_axle2_0, T);
     }
     rt->windows++;
     hg_logf(lg, "logEvents", "t = %.6f s: averaging window %d complete: eta_cycle = %.6f, "
