@@ -121,9 +121,14 @@ def summarise(r, cpu, stop_time, params, b):
 # ---------------------------------------------------------------------------- output folder
 def run_name(params, name=None):
     """The run's folder name: --name, or the values set ('T_s=200_speed_rpm=3000')."""
-    text = name or "_".join(f"{k}={pathlib.Path(str(v)).name if k.endswith('_file') else v}"
-                            for k, v in params.items()) or "defaults"
+    text = name or "_".join(f"{k}={_short(k, v)}" for k, v in params.items()) or "defaults"
     return re.sub(r"[^A-Za-z0-9_.=+-]", "-", text)[:120]
+
+
+def _short(name, value):
+    if name.endswith("_file"):
+        return pathlib.Path(str(value)).name
+    return f"{value:g}" if isinstance(value, float) else value
 
 
 def fresh_folder(out, name, overwrite=False):
