@@ -204,6 +204,31 @@ class Instance:
             rows.append(self._call(self.slave.getReal, refs))
         return np.array(rows)
 
+    def series(self, stop_time, h, names):
+        """The named outputs (Real, Integer, Boolean) now and after each step of size h up to
+        stop_time, as a structured array with a 'time' field, like fmpy's simulate_fmu."""
+        import numpy as np
+
+        names = list(dict.fromkeys(names))  # each output once
+        reals = [n for n in names if self.table.variable(n).type == "Real"]
+        ints = [n for n in names if self.vars[n].type != "Real"]
+        rr = [self.reals(reals)]
+        ri = [self.ints(ints)]
+        times = [self.t]
+        for _ in range(int(round((stop_time - self.t) / h))):
+            self.do_step(self.t, h)
+            rr.append(self.reals(reals))
+            ri.append(self.ints(ints))
+            times.append(self.t)
+        out = np.zeros(len(times), dtype=[("time", float)] + [(n, float) for n in reals]
+                       + [(n, np.int64) for n in ints])
+        out["time"] = times
+        for j, n in enumerate(reals):
+            out[n] = [row[j] for row in rr]
+        for j, n in enumerate(ints):
+            out[n] = [row[j] for row in ri]
+        return out
+
     def pinion_teeth(self):
         """N_p of the gear set in use (after initialisation)."""
         return int(self.get("N_p"))
@@ -229,6 +254,14 @@ class Instance:
 
     def __exit__(self, *exc):
         self.close()
+
+
+def simulate(fmu_path, stop_time, output_interval, start_values=None, output=()):
+    """One run from t = 0 (fmpy's simulate_fmu in its everyday use, on Instance): the outputs at
+    t = 0 and every output_interval as a structured array with a 'time' field."""
+    with Instance(fmu_path, name="simulate") as inst:
+        inst.start(start_values or {})
+        return inst.series(stop_time, output_interval, list(output))
 
 
 def normalize(params, table=TABLE):

@@ -50,20 +50,10 @@ def simulate(inst, params, stop_time, output_interval=None):
     inst.start(params)
     period = mesh_period(inst)
     h = output_interval or (period / SAMPLES_PER_CYCLE if period else FALLBACK_INTERVAL)
-    n = max(1, int(round(stop_time / h)))
-    reals = [v for v in OUTPUTS if inst.vars[v].type == "Real"]
-    ints = [v for v in OUTPUTS if inst.vars[v].type != "Real"]
-    rr, ri = np.empty((n + 1, len(reals))), np.empty((n + 1, len(ints)), dtype=np.int64)
-    rr[0], ri[0] = inst.reals(reals), inst.ints(ints)
     t0 = time.process_time()
-    for k in range(n):
-        inst.do_step(k * h, h)
-        rr[k + 1], ri[k + 1] = inst.reals(reals), inst.ints(ints)
+    r = inst.series(max(h, round(stop_time / h) * h), h, OUTPUTS)
     cpu = time.process_time() - t0
-    r = {"time": np.arange(n + 1) * h}
-    r.update({name: rr[:, j] for j, name in enumerate(reals)})
-    r.update({name: ri[:, j] for j, name in enumerate(ints)})
-    return r, h, cpu
+    return {name: r[name] for name in r.dtype.names}, h, cpu
 
 
 def mesh_cycles(r, n_p):

@@ -7,7 +7,7 @@ import math
 
 import numpy as np
 import pytest
-from fmpy import simulate_fmu
+from hypoid.instance import simulate
 
 MESH = {"mean": 1, "varying": 2, "rigid": 3}
 FRICTION = {"none": 1, "coulomb": 2, "ehl_isothermal": 3, "ehl_thermal": 4}
@@ -21,8 +21,8 @@ def residual(r):
 
 
 def run(fmu, stop=0.05, dt=1e-3, output=(), **start):
-    return simulate_fmu(str(fmu), stop_time=stop, output_interval=dt, start_values=start,
-                        output=list(output) + ENERGY)
+    return simulate(fmu, stop_time=stop, output_interval=dt, start_values=start,
+                    output=list(output) + ENERGY)
 
 
 @pytest.mark.parametrize("mesh,friction,solver",

@@ -3,7 +3,7 @@ linearised system (ring-down), energy balance, governor and contact loss."""
 
 import numpy as np
 import pytest
-from fmpy import simulate_fmu
+from hypoid.instance import simulate
 
 PHYSICS_F = {1: (260.8, 433.3, 1722.2)}  # docs/physics.md §8.4, gear set 1
 ENERGY = ["E_in", "E_out", "E_friction", "E_damping", "E_excitation", "E_stored"]
@@ -17,9 +17,9 @@ def energy_residual(r):
 
 @pytest.fixture(scope="module")
 def default_run(fmu_path):
-    return simulate_fmu(str(fmu_path), stop_time=0.3, output_interval=1e-4,
-                        output=["DTE", "W_t", "w_p", "w_w", "eta", "eta_cycle", "contact",
-                                "n_impacts", "T_w_out", "k_m", "P_loss", "P_in"] + ENERGY)
+    return simulate(fmu_path, stop_time=0.3, output_interval=1e-4,
+                    output=["DTE", "W_t", "w_p", "w_w", "eta", "eta_cycle", "contact",
+                            "n_impacts", "T_w_out", "k_m", "P_loss", "P_in"] + ENERGY)
 
 
 def test_default_reaches_steady_meshing_at_static_deflection(default_run, model_description):
@@ -81,9 +81,9 @@ def test_contact_loss_near_mode_two_and_energy_still_closes(fmu_path):
     """Frictionless, 50 N.m at the mode-2 mesh resonance (about 1200 rpm for set 1, docs/physics.md §8.7):
     the teeth separate, the integrator stops at every impact, and energy still balances."""
     w = 1200 * np.pi / 30
-    r = simulate_fmu(str(fmu_path), stop_time=0.4, output_interval=5e-5,
-                     start_values={"friction_model": 1, "T_s": 50.0, "w_set": w, "w_p0": w},
-                     output=["DTE", "contact", "n_impacts"] + ENERGY)
+    r = simulate(fmu_path, stop_time=0.4, output_interval=5e-5,
+                 start_values={"friction_model": 1, "T_s": 50.0, "w_set": w, "w_p0": w},
+                 output=["DTE", "contact", "n_impacts"] + ENERGY)
     late = r["time"] > 0.2
     assert r["n_impacts"][-1] > 10
     assert r["DTE"][late].min() < 70e-6          # inside the backlash: separation
@@ -92,9 +92,9 @@ def test_contact_loss_near_mode_two_and_energy_still_closes(fmu_path):
 
 
 def test_mean_mesh_model_has_no_excitation(fmu_path):
-    r = simulate_fmu(str(fmu_path), stop_time=0.1, output_interval=1e-4,
-                     start_values={"mesh_model": 1, "friction_model": 1},
-                     output=["DTE", "k_m"] + ENERGY)
+    r = simulate(fmu_path, stop_time=0.1, output_interval=1e-4,
+                 start_values={"mesh_model": 1, "friction_model": 1},
+                 output=["DTE", "k_m"] + ENERGY)
     assert np.all(r["E_excitation"] == 0.0)
     assert np.ptp(r["k_m"]) == 0.0
     assert abs(energy_residual(r)[-1]) < 1e-4 * r["E_in"][-1]

@@ -3,7 +3,7 @@ identity of the friction torques, the lubricant ranking, and pairs out of mesh."
 
 import numpy as np
 import pytest
-from fmpy import simulate_fmu
+from hypoid.instance import simulate
 
 PAIR = ["W", "h_c", "lambda", "mu", "F_v", "F_b", "T_c", "u_e", "V_s", "p_h", "g_V", "g_E"]
 OUT = ["T_fp", "T_fg", "w_p", "w_g", "P_loss", "eta_cycle", "E_in", "E_friction"] + \
@@ -11,8 +11,8 @@ OUT = ["T_fp", "T_fg", "w_p", "w_g", "P_loss", "eta_cycle", "E_in", "E_friction"
 
 
 def run(fmu, **start):
-    return simulate_fmu(str(fmu), stop_time=0.3, output_interval=2e-4, start_values=start,
-                        output=OUT)
+    return simulate(fmu, stop_time=0.3, output_interval=2e-4, start_values=start,
+                    output=OUT)
 
 
 @pytest.fixture(scope="module")

@@ -5,7 +5,7 @@ energy audit."""
 
 import numpy as np
 import pytest
-from fmpy import simulate_fmu
+from hypoid.instance import simulate
 
 from hypoid.variables import ENUMERATIONS
 
@@ -15,10 +15,10 @@ PAIRS = [f"pair[{k}].{q}" for k in (1, 2, 3) for q in ("W", "mu", "F_v", "F_b")]
 
 def run(fmu_path, T_s, rpm, stop=0.3, **extra):
     w = rpm * np.pi / 30
-    return simulate_fmu(str(fmu_path), stop_time=stop, output_interval=5e-5,
-                        start_values={"T_s": T_s, "w_set": w, "w_p0": w, **extra},
-                        output=["DTE", "contact", "W_t", "T_fp", "T_fg", "n_impacts"] + PAIRS
-                        + ENERGY)
+    return simulate(fmu_path, stop_time=stop, output_interval=5e-5,
+                    start_values={"T_s": T_s, "w_set": w, "w_p0": w, **extra},
+                    output=["DTE", "contact", "W_t", "T_fp", "T_fg", "n_impacts"] + PAIRS
+                    + ENERGY)
 
 
 def pair_load(r):
@@ -81,10 +81,10 @@ def test_smoothed_backlash_damper_fades_inside_the_gap(fmu_path):
     newtons."""
     b, eps = 70e-6, 0.2e-6
     w = 1200 * np.pi / 30
-    r = simulate_fmu(str(fmu_path), stop_time=0.4, output_interval=5e-5,
-                     start_values={"T_s": 50.0, "w_set": w, "w_p0": w, "backlash_smoothing": eps,
-                                   "backlash_model": ENUMERATIONS["backlash_model"]["smoothed"]},
-                     output=["DTE", "W_t", "k_m"] + ENERGY)
+    r = simulate(fmu_path, stop_time=0.4, output_interval=5e-5,
+                 start_values={"T_s": 50.0, "w_set": w, "w_p0": w, "backlash_smoothing": eps,
+                               "backlash_model": ENUMERATIONS["backlash_model"]["smoothed"]},
+                 output=["DTE", "W_t", "k_m"] + ENERGY)
     x = r["DTE"]
     deep = np.abs(x) < b - 10 * eps
     assert deep.sum() > 500
