@@ -35,56 +35,75 @@ static int contact(const hg_dyn_params *p, const hg_runtime *rt, const hg_dyn_ev
     return ev->W_t >= 0.0 ? HG_MODE_DRIVE : HG_MODE_BACK;
 }
 
-void hg_outputs_write(const hg_setup *s, const hg_runtime *rt, long steps, long evals,
-                      hg_vars *v)
+/* Speeds, deflection, mesh load and torques, contact and the integrator's counters. */
+static void write_motion(const hg_setup *s, const hg_runtime *rt, const hg_dyn_eval *ev,
+                         long steps, long evals, hg_vars *v)
 {
     const double *y = rt->y;
-    hg_inputs u;
-    hg_dyn_eval ev;
-    double warm[HG_MAX_PAIRS];
-    memcpy(warm, rt->T_c_warm, sizeof warm); /* outputs must not perturb the integration */
-    hg_stepping_inputs_at(rt, rt->t, &u);
-    hg_dyn_evaluate(&s->p, &u, rt->mode, y, 1, warm, &ev);
     v->w_s = y[HG_Y_W_S];
     v->w_p = y[HG_Y_W_P];
     v->w_g = y[HG_Y_W_G];
     v->w_w = y[HG_Y_W_W];
     v->DTE = y[HG_Y_X];
-    v->DTE_elastic = s->p.mesh == HG_MESH_MODEL_RIGID ? 0.0 : ev.f; /* eq. 24: f(x) */
-    v->W_t = ev.W_t;
-    v->T_fp = ev.T_fp;
-    v->T_fg = ev.T_fg;
-    v->P_loss = ev.P_loss;
-    v->P_in = ev.P_in;
-    v->eta = ev.eta;
-    v->eta_cycle = rt->eta_cycle;
-    v->P_loss_cycle = rt->P_loss_cycle;
-    v->T_w_out = ev.T_w;
-    v->k_m = ev.mesh.k_m;
-    v->contact = contact(&s->p, rt, &ev);
+    v->DTE_elastic = s->p.mesh == HG_MESH_MODEL_RIGID ? 0.0 : ev->f; /* eq. 24: f(x) */
+    v->W_t = ev->W_t;
+    v->T_fp = ev->T_fp;
+    v->T_fg = ev->T_fg;
+    v->T_w_out = ev->T_w;
+    v->k_m = ev->mesh.k_m;
+    v->contact = contact(&s->p, rt, ev);
     v->n_impacts = rt->n_impacts;
     v->solver_steps = clamp_int(steps);
     v->rhs_evals = clamp_int(evals);
+}
+
+/* Power, losses and efficiency of the flanks and of the axle, and the oil's heat balance. */
+static void write_losses(const hg_runtime *rt, const hg_dyn_eval *ev, hg_vars *v)
+{
+    v->P_loss = ev->P_loss;
+    v->P_in = ev->P_in;
+    v->eta = ev->eta;
+    v->eta_cycle = rt->eta_cycle;
+    v->P_loss_cycle = rt->P_loss_cycle;
+    v->P_loss_viscous = ev->P_visc;
+    v->P_loss_boundary = ev->P_loss - ev->P_visc;
+    v->P_churn = ev->axle.P_churn;
+    v->P_bearings = ev->axle.P_bearings;
+    v->P_seals = ev->axle.P_seals;
+    v->P_axle = ev->P_axle;
+    v->P_in_axle = ev->P_in_axle;
+    v->eta_axle = ev->eta_axle;
+    v->eta_axle_cycle = rt->eta_axle_cycle;
+    v->T_oil = ev->T_oil;
+    v->Q_dot_housing = ev->Q_dot;
+}
+
+/* The energy audit: the integrals carried as states and the stored energy. */
+static void write_energy(const hg_setup *s, const double *y, const hg_dyn_eval *ev, hg_vars *v)
+{
     v->E_in = y[HG_Y_E_IN];
     v->E_out = y[HG_Y_E_OUT];
     v->E_friction = y[HG_Y_E_FRIC];
     v->E_damping = y[HG_Y_E_DAMP];
     v->E_excitation = y[HG_Y_E_EXC];
-    v->E_stored = hg_dyn_stored_energy(&s->p, y, &ev);
-    v->P_loss_viscous = ev.P_visc;
-    v->P_loss_boundary = ev.P_loss - ev.P_visc;
-    v->P_churn = ev.axle.P_churn;
-    v->P_bearings = ev.axle.P_bearings;
-    v->P_seals = ev.axle.P_seals;
-    v->P_axle = ev.P_axle;
-    v->P_in_axle = ev.P_in_axle;
-    v->eta_axle = ev.eta_axle;
-    v->eta_axle_cycle = rt->eta_axle_cycle;
-    v->T_oil = ev.T_oil;
-    v->Q_dot_housing = ev.Q_dot;
+    v->E_stored = hg_dyn_stored_energy(&s->p, y, ev);
     v->Q_housing = y[HG_Y_Q_H];
     v->E_churn = y[HG_Y_E_CHURN];
     v->E_bearings = y[HG_Y_E_BEAR];
     v->E_seals = y[HG_Y_E_SEAL];
+}
+
+void hg_outputs_write(const hg_setup *s, const hg_runtime *rt, long steps, long evals,
+                      hg_vars *v)
+{
+    hg_inputs u;
+    hg_dyn_eval ev;
+    double warm[HG_MAX_PAIRS];
+    memcpy(warm, rt->T_c_warm, sizeof warm); /* outputs must not perturb the integration */
+    hg_stepping_inputs_at(rt, rt->t, &u);
+    hg_dyn_evaluate(&s->p, &u, rt->mode, rt->y, 1, warm, &ev);
+    write_motion(s, rt, &ev, steps, evals, v);
+    write_losses(rt, &ev, v);
+    write_energy(s, rt->y, &ev, v);
     write_pairs(v, &ev);
 }
