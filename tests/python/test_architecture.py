@@ -1,0 +1,91 @@
+"""The C layers point downwards only (fmi -> model -> tribo / solver / axle -> io), no two files
+include each other, and the include graph that docs/architecture.md prints is the one of
+fmu-src/ as it is."""
+import pathlib
+import re
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+SRC = ROOT / "fmu-src"
+DOC = ROOT / "docs" / "architecture.md"
+# each layer and the layers it may include (besides itself and the generated variable table)
+ALLOWED = {"fmi": {"model", "io"}, "model": {"tribo", "solver", "axle", "io"},
+           "tribo": {"io"}, "solver": {"io"}, "axle": {"io"}, "io": set()}
+INCLUDE = re.compile(r'^#include "([^"]+)"', re.M)
+
+
+def includes():
+    """{"layer/file": [included "layer/file" or special names]} of every file in fmu-src/."""
+    graph = {}
+    for path in sorted(SRC.glob("*/*.[ch]")):
+        layer = path.parent.name
+        names = []
+        for inc in INCLUDE.findall(path.read_text(encoding="utf-8")):
+            if inc == "hg_vars.h":
+                names.append("generated")
+            elif inc == "fmi2Functions.h":
+                names.append("FMI headers")
+            else:
+                names.append(inc if "/" in inc else f"{layer}/{inc}")
+        graph[f"{layer}/{path.name}"] = names
+    return graph
+
+
+def layer_graph():
+    layers = {}
+    for name, incs in includes().items():
+        layer = name.split("/")[0]
+        targets = layers.setdefault(layer, set())
+        targets.update(i.split("/")[0] for i in incs if i.split("/")[0] != layer)
+    return layers
+
+
+def test_layers_point_downwards_only():
+    for layer, targets in layer_graph().items():
+        upward = targets - ALLOWED[layer] - {"generated", "FMI headers"}
+        assert not upward, f"fmu-src/{layer}/ includes {sorted(upward)}: layers point down only"
+        if layer != "fmi":
+            assert "FMI headers" not in targets, f"fmu-src/{layer}/ includes the FMI headers"
+
+
+def test_no_include_cycles():
+    graph = includes()
+
+    def visit(node, stack):
+        assert node not in stack, "include cycle: " + " -> ".join(stack + [node])
+        for nxt in graph.get(node, []):
+            if nxt in graph:
+                visit(nxt, stack + [node])
+
+    for node in graph:
+        visit(node, [])
+
+
+def test_every_include_names_its_layer():
+    for name, incs in includes().items():
+        for inc in incs:
+            assert inc in ("generated", "FMI headers") or (SRC / inc).exists(), (name, inc)
+        raw = INCLUDE.findall((SRC / name).read_text(encoding="utf-8"))
+        bare = [i for i in raw if "/" not in i and i not in ("hg_vars.h", "fmi2Functions.h")]
+        assert not bare, f"{name}: include {bare} as 'layer/file.h'"
+
+
+def test_architecture_document_prints_the_include_graph():
+    text = DOC.read_text(encoding="utf-8")
+    printed = {}
+    for layer, targets in re.findall(r"^    (\w+)\s+-> (.+)$", text, flags=re.M):
+        if layer in ALLOWED:
+            printed[layer] = set() if targets.startswith("(") else {
+                t.strip() for t in targets.split(",")}
+    actual = layer_graph()
+    for layer in ALLOWED:
+        assert printed.get(layer) == actual.get(layer, set()), (
+            f"docs/architecture.md prints {layer} -> {sorted(printed.get(layer, []))}, "
+            f"fmu-src/{layer}/ includes {sorted(actual.get(layer, []))}")
+
+
+def test_architecture_document_names_every_source_file():
+    text = DOC.read_text(encoding="utf-8")
+    for path in sorted(SRC.glob("*/*.c")):
+        rel = f"{path.parent.name}/{path.name}"
+        assert rel in text or path.name in text or f"{path.parent.name}/*.c" in text, (
+            f"docs/architecture.md does not say what fmu-src/{rel} owns")
