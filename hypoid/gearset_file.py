@@ -14,6 +14,11 @@ UNITS = {"k_m": "N/m", "R_p": "m", "e_0": "m", "ls": "1", "R_x": "m", "R_y": "m"
          "up_x": "m/(rad/s) of pinion speed", "up_y": "m/(rad/s) of pinion speed",
          "ug_x": "m/(rad/s) of gear speed", "ug_y": "m/(rad/s) of gear speed"}
 PARTS = ("mean", "sin", "cos")
+# Layered files (docs/data-files.md): e_0 once, these per flank and torque level under
+# '<flank>.<level>.<series>'; the levels are pinion torques [N·m], increasing.
+FLANK_SERIES = ("k_m", "R_p") + PAIR_SERIES
+FLANKS = ("drive", "coast")
+MAX_LEVELS = 8
 
 
 @dataclass(frozen=True)
@@ -45,6 +50,13 @@ class Gearset:
     series: dict
     comments: list = field(default_factory=list)
     notes: dict = field(default_factory=dict)
+    torque_levels: tuple = ()  # layered file: pinion torque of each level [N·m]
+    flanks: tuple = ()  # layered file: ("drive",) or ("drive", "coast")
+    layers: dict = field(default_factory=dict)  # {(flank, level 1..n): {series: Series}}
+
+    @property
+    def layered(self):
+        return bool(self.torque_levels)
 
 
 def _number(x):
@@ -64,14 +76,28 @@ def format_gearset(gs):
     lines = [f"# {c}" if c else "#" for c in gs.comments]
     name = " ".join(gs.name.replace("#", " ").split())  # one line, no comment sign
     lines += [MAGIC, f"name {name}", f"N_p {gs.N_p}", f"N_g {gs.N_g}"]
-    for key in MESH_SERIES + PAIR_SERIES:
-        s = gs.series[key]
-        sin, cos = _trimmed(s)
-        lines += ["", f"# {key} [{UNITS[key]}]" + (f": {gs.notes[key]}" if key in gs.notes else "")]
-        lines += [f"{key}.mean {_number(s.mean)}",
-                  " ".join([f"{key}.sin"] + [_number(c) for c in sin]),
-                  " ".join([f"{key}.cos"] + [_number(c) for c in cos])]
+    if not gs.layered:
+        for key in MESH_SERIES + PAIR_SERIES:
+            lines += _series_lines(key, key, gs.series[key], gs.notes)
+        return "\n".join(lines) + "\n"
+    lines += ["torque_levels " + " ".join(_number(t) for t in gs.torque_levels),
+              "flanks " + " ".join(gs.flanks)]
+    lines += _series_lines("e_0", "e_0", gs.series["e_0"], gs.notes)
+    for flank in gs.flanks:
+        for level, torque in enumerate(gs.torque_levels, 1):
+            lines += ["", f"# --- {flank} flank at {_number(torque)} N·m ---"]
+            for key in FLANK_SERIES:
+                full = f"{flank}.{level}.{key}"
+                lines += _series_lines(full, key, gs.layers[(flank, level)][key], gs.notes)
     return "\n".join(lines) + "\n"
+
+
+def _series_lines(full, key, s, notes):
+    sin, cos = _trimmed(s)
+    return ["", f"# {full} [{UNITS[key]}]" + (f": {notes[full]}" if full in notes else ""),
+            f"{full}.mean {_number(s.mean)}",
+            " ".join([f"{full}.sin"] + [_number(c) for c in sin]),
+            " ".join([f"{full}.cos"] + [_number(c) for c in cos])]
 
 
 def write_gearset(path, gs):
@@ -86,11 +112,42 @@ def read_gearset(path):
     if not name:
         raise GearsetFileError(f"{path}: missing key 'name'")
     N_p, N_g = (_teeth(path, entries, key) for key in ("N_p", "N_g"))
-    series = {key: _series(path, entries, key) for key in MESH_SERIES + PAIR_SERIES}
+    if "torque_levels" in entries or "flanks" in entries:
+        gs = _layered(path, entries, name, N_p, N_g)
+    else:
+        gs = Gearset(name, N_p, N_g, {key: _series(path, entries, key)
+                                      for key in MESH_SERIES + PAIR_SERIES})
     if entries:
         key, (line, _) = next(iter(entries.items()))
         raise GearsetFileError(f"{path}, line {line}: unknown key '{key}'")
-    return Gearset(name, N_p, N_g, series)
+    return gs
+
+
+def _layered(path, entries, name, N_p, N_g):
+    """A layered file: torque_levels, flanks, e_0 and the series of every flank and level."""
+    line, levels = _numbers(path, entries, "torque_levels")
+    if not 1 <= len(levels) <= MAX_LEVELS:
+        raise GearsetFileError(f"{path}, line {line}: torque_levels needs 1 to {MAX_LEVELS} values "
+                               f"(has {len(levels)})")
+    for i, t in enumerate(levels):
+        if t < 0 or (i and t <= levels[i - 1]):
+            raise GearsetFileError(f"{path}, line {line}: torque_levels value {i + 1} = {t:g} N·m "
+                                   "must be >= 0 and above the one before: the levels must increase")
+    if "flanks" not in entries:
+        raise GearsetFileError(f"{path}: missing key 'flanks' (drive, or drive coast)")
+    f_line, text = entries.pop("flanks")
+    flanks = tuple(text.split())
+    if flanks not in (FLANKS[:1], FLANKS):
+        raise GearsetFileError(f"{path}, line {f_line}: flanks '{text}': must be 'drive' or "
+                               "'drive coast'")
+    if "coast" in flanks and "coast.1.k_m.mean" not in entries:
+        raise GearsetFileError(f"{path}, line {f_line}: flanks '{text}' asks for a coast flank, "
+                               "but the file has no coast series (no key 'coast.1.k_m.mean')")
+    series = {"e_0": _series(path, entries, "e_0")}
+    layers = {(f, i): {key: _series(path, entries, f"{f}.{i}.{key}") for key in FLANK_SERIES}
+              for f in flanks for i in range(1, len(levels) + 1)}
+    return Gearset(name, N_p, N_g, series, torque_levels=tuple(levels), flanks=flanks,
+                   layers=layers)
 
 
 def _entries(path):

@@ -2,6 +2,7 @@
 
     hypoid tca surrogate (--set N --out FILE | --all --out-dir DIR)
                          [--harmonics 8] [--contact-harmonics 32]
+                         [--loaded [--torques 25 50 100 200 400]]
     hypoid tca import TABLE.csv --out FILE [--speed-rpm RPM] [--name TEXT]
                       [--harmonics 8] [--contact-harmonics 32]
     hypoid tca export-csv --set N --out TABLE.csv [--speed-rpm 2000] [--rows 360]
@@ -16,10 +17,12 @@ import os
 import numpy as np
 
 from hypoid import cliargs
+from hypoid import tca_loaded as tl
 from hypoid import tca_surrogate as sur
-from hypoid.gearset_file import (MAX_HARMONICS, MESH_SERIES, PAIR_SERIES, UNITS, Gearset,
-                                 write_gearset)
-from hypoid.tca_fit import CONTACT_HARMONICS, HARMONICS, N_SAMPLES, fit_gearset, fit_notes, grid
+from hypoid.gearset_file import (MAX_HARMONICS, MAX_LEVELS, MESH_SERIES, PAIR_SERIES, UNITS,
+                                 Gearset, write_gearset)
+from hypoid.tca_fit import (CONTACT_HARMONICS, HARMONICS, N_SAMPLES, fit, fit_error, fit_gearset,
+                            fit_notes, grid)
 from hypoid.tca_table import DATA_COLUMNS, TableError, import_table  # noqa: F401 (re-exported)
 
 
@@ -82,6 +85,53 @@ def _surrogate_comments(set_no, gs, harmonics, contact_harmonics):
     ]
 
 
+# --- loaded surrogate: both flanks at several torques (docs/physics.md §10.8) -------------------
+
+def loaded_samples(model, torque, n_cycle=N_SAMPLES // 3):
+    """Samples of one flank at one pinion torque: k_m and R_p at n_cycle mesh angles θ of one
+    cycle, the pair series at the 3 n_cycle angles ψ of grid(3 n_cycle), and the unloaded e_u."""
+    gs, m = model.gs, tl.loaded_mesh(model, torque, n_theta=n_cycle)
+    xi = sur.xi_pairs(gs, m.theta)
+    arm = gs.R_p0 * (1.0 + (xi - 0.5) * sur.TRAVEL * gs.blank.b_2 / gs.R_m1)
+    samples = {"k_m": m.k_m, "R_p": (m.shares * arm).sum(axis=0),
+               "ls": m.shares.reshape(-1)}  # pair 1 at ψ_k is pair k // n of θ_(k mod n)
+    samples.update(sur.pair_contact(gs, grid(3 * n_cycle)))
+    return samples, m.e_u
+
+
+def loaded_surrogate(set_no, torques=tl.TORQUES, harmonics=CONTACT_HARMONICS,
+                     contact_harmonics=CONTACT_HARMONICS):
+    """A layered gear-set file of set `set_no`: drive and coast flanks at each pinion torque.
+    The loaded series change steeply where a pair starts to carry load, so k_m, R_p and ls take
+    as many harmonics as the contact series by default."""
+    if not 1 <= len(torques) <= MAX_LEVELS or any(b <= a for a, b in zip(torques, torques[1:])):
+        raise ValueError(f"--torques: 1 to {MAX_LEVELS} increasing values, not {list(torques)}")
+    blank, layers, notes = sur.TABLE_1[set_no], {}, {}
+    for flank in tl.FLANKS:
+        model = tl.LoadedFlank(tl.flank_set(blank, flank))
+        for level, torque in enumerate(torques, 1):
+            samples, e_u = loaded_samples(model, torque)
+            layers[(flank, level)] = fit_gearset(samples, harmonics, contact_harmonics)
+            for key, s in layers[(flank, level)].items():
+                angle = grid(len(samples[key]))
+                err, rel = fit_error(s, angle, samples[key])
+                notes[f"{flank}.{level}.{key}"] = (f"{len(s.sin)} harmonics; fit error at the "
+                                                   f"{len(angle)} samples: max {err:.3g} ({rel:.2g})")
+            if flank == "drive" and level == 1:
+                e_0 = fit(e_u, harmonics)
+    gs = sur.GearSet(blank)
+    name = (f"Paouris et al. 2016 gear set {set_no} ({blank.N_p}/{blank.N_g}), loaded surrogate "
+            "TCA, drive and coast")
+    comments = _surrogate_comments(set_no, gs, harmonics, contact_harmonics)[:4] + [
+        "", "Loaded tooth contact (§10.8): secant k_m, load shares and R_p per pinion torque level;",
+        "both flanks (coast: alpha_nC = alpha_e - alpha_lim); e_0 the unloaded transmission error;",
+        f"  profile ease-off {tl.DELTA_PROFILE * 1e6:g} um, lengthwise ease-off "
+        f"{sur.DELTA_END * 1e6:g} um; written by `hypoid tca surrogate --loaded`."]
+    return Gearset(name, blank.N_p, blank.N_g, {"e_0": e_0}, comments, notes,
+                   torque_levels=tuple(float(t) for t in torques), flanks=tl.FLANKS,
+                   layers=layers)
+
+
 # --- surrogate as a TCA table ---------------------------------------------------------------------
 
 def export_csv(set_no, path, speed_rpm=2000.0, rows=360):
@@ -131,6 +181,10 @@ def _parser():
     which.add_argument("--all", action="store_true", help="all three sets")
     s.add_argument("--out", help="output file (with --set)")
     s.add_argument("--out-dir", help="output directory (with --all): gearset1.txt ...")
+    s.add_argument("--loaded", action="store_true",
+                   help="both flanks at several torques from the loaded TCA (docs/physics.md §10.8)")
+    s.add_argument("--torques", type=float, nargs="+", default=list(tl.TORQUES),
+                   help="pinion torque levels of --loaded [N·m], increasing")
     i = sub.add_parser("import", help="gear-set file from a TCA table (docs/tca-import.md)")
     i.add_argument("table", help="CSV table")
     i.add_argument("--out", required=True, help="output gear-set file")
@@ -159,8 +213,12 @@ def _gearsets(args):
     if args.all != bool(args.out_dir) or args.all == bool(args.out):
         raise ValueError("use --set N --out FILE or --all --out-dir DIR")
     sets = sorted(sur.TABLE_1) if args.all else [args.set]
-    return [(args.out or os.path.join(args.out_dir, f"gearset{n}.txt"),
-             surrogate(n, args.harmonics, args.contact_harmonics)) for n in sets]
+    def made(n):
+        if args.loaded:
+            return loaded_surrogate(n, tuple(args.torques), max(args.harmonics, args.contact_harmonics),
+                                    args.contact_harmonics)
+        return surrogate(n, args.harmonics, args.contact_harmonics)
+    return [(args.out or os.path.join(args.out_dir, f"gearset{n}.txt"), made(n)) for n in sets]
 
 
 def _run(args):
@@ -171,6 +229,9 @@ def _run(args):
     for path, gearset in _gearsets(args):
         write_gearset(path, gearset)
         print(f"wrote {path}")
+        if gearset.layered:
+            print(f"  {len(gearset.flanks)} flanks x {len(gearset.torque_levels)} torque levels")
+            continue
         for key in MESH_SERIES + PAIR_SERIES:
             print(f"  {key:5} [{UNITS[key]}] {gearset.notes[key]}")
 

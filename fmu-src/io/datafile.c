@@ -310,6 +310,12 @@ int hg_datafile_count(const hg_datafile *f, const char *key)
     return e ? count_tokens(e->rest) : -1;
 }
 
+int hg_datafile_line(const hg_datafile *f, const char *key)
+{
+    const entry *e = find(f, key);
+    return e ? e->line : -1;
+}
+
 int hg_datafile_numbers(const hg_datafile *f, const char *key, size_t n_min, size_t n_max,
                         double *vals, size_t *n, char *err, size_t errlen)
 {

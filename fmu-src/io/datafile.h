@@ -28,6 +28,9 @@ void hg_datafile_free(hg_datafile *f);
 /* Number of values on the line of `key`, or -1 when the key is absent. */
 int hg_datafile_count(const hg_datafile *f, const char *key);
 
+/* Line number of `key` in the file, or -1 when the key is absent (for messages about a value). */
+int hg_datafile_line(const hg_datafile *f, const char *key);
+
 /* Reads between n_min and n_max finite numbers of `key` into vals; *n receives the count (may be
  * NULL when n_min == n_max). Returns 0, or -1 with err naming file, line and key. */
 int hg_datafile_numbers(const hg_datafile *f, const char *key, size_t n_min, size_t n_max,

@@ -8,6 +8,15 @@
 
 #define SLIDE_EPS 1e-4 /* regularisation of the sliding direction [m/s] (docs/physics.md §8.8) */
 #define SPIN_EPS 1e-3  /* regularisation of the rotation direction of the map losses [rad/s] */
+#define KM_FILTER_CYCLES 3.0 /* time constant of the torque filter in mesh periods (§10.8) */
+#define KM_FILTER_W_MIN 1.0  /* pinion speed below which the filter's time constant stops
+                                growing [rad/s] */
+
+/* The flank whose tooth data apply: the back flank can touch only for x < 0. */
+static int active_flank(const double *y)
+{
+    return y[HG_Y_X] < 0.0 ? HG_FLANK_COAST : HG_FLANK_DRIVE;
+}
 
 static double shaft1_torque(const hg_dyn_params *p, const double *y)
 {
@@ -53,7 +62,8 @@ static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn
 {
     double w_p = y[HG_Y_W_P];
     if (p->mesh == HG_MESH_MODEL_VARYING) {
-        hg_gearset_mesh(p->gear, p->gear->N_p * y[HG_Y_PHI_P], &ev->mesh);
+        hg_gearset_mesh(p->gear, active_flank(y), y[HG_Y_T_KM], p->gear->N_p * y[HG_Y_PHI_P],
+                        &ev->mesh);
         ev->f = hg_backlash_f(&p->backlash, y[HG_Y_X], mode);
         ev->Phi = hg_backlash_potential(&p->backlash, y[HG_Y_X], mode);
     } else {
@@ -71,15 +81,16 @@ static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn
 }
 
 /* Friction torques from the sliding direction (docs/physics.md §9.1): T_fp w_p + T_fg w_g = -P_loss.
- * Pairs carry the flank loads, so nothing while the teeth are apart; on the coast flank the
- * drive flank's contact data stand in for its own. */
+ * Pairs carry the flank loads, so nothing while the teeth are apart; on the coast flank its own
+ * contact data apply (the drive flank's when the file has no coast flank). */
 static void pair_friction(const hg_dyn_params *p, const double *y,
                           int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
     int k, with_contact = p->friction.model != HG_FRICTION_MODEL_NONE || all_pairs;
     double w_p = y[HG_Y_W_P], w_g = y[HG_Y_W_G], W = ev->W_drive + ev->W_coast;
     hg_pair_geometry geo;
-    hg_gearset_pairs(p->gear, p->gear->N_p * y[HG_Y_PHI_P], with_contact, &geo);
+    hg_gearset_pairs(p->gear, active_flank(y), y[HG_Y_T_KM], p->gear->N_p * y[HG_Y_PHI_P],
+                     with_contact, &geo);
     for (k = 0; k < HG_MAX_PAIRS; k++) {
         hg_pair_contact c;
         double vs_x, vs_y, norm, P_k;
@@ -190,6 +201,17 @@ static void efficiency(const hg_inputs *u, const double *y, hg_dyn_eval *ev)
     ev->eta_axle = efficiency_of(ev->P_axle, ev->P_in_axle);
 }
 
+/* dT_km/dt: a first-order filter of the transmitted torque |W_t| R_p with a time constant of
+ * KM_FILTER_CYCLES mesh periods, so that the mesh force does not modulate its own stiffness
+ * within a cycle (docs/physics.md §10.8); zero for tooth data of one torque level. */
+static double torque_filter_rate(const hg_dyn_params *p, const double *y, const hg_dyn_eval *ev)
+{
+    double w = fmax(fabs(y[HG_Y_W_P]), KM_FILTER_W_MIN);
+    double tau = KM_FILTER_CYCLES * 6.283185307179586 / (p->gear->N_p * w);
+    if (p->gear->n_levels < 2) return 0.0;
+    return (fabs(ev->W_t) * ev->mesh.R_p - y[HG_Y_T_KM]) / tau;
+}
+
 void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const double *y,
                      int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
@@ -213,7 +235,9 @@ void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const
     ev->P_damp = p->c_t1 * d1 * d1 + p->c_t2 * d2 * d2 + p->c_m * ev->g * ev->xdot * ev->xdot;
     if (p->mesh == HG_MESH_MODEL_VARYING) {
         double N_p_w = p->gear->N_p * y[HG_Y_W_P];
-        ev->P_exc = -ev->W_t * ev->mesh.de_0 * N_p_w + ev->mesh.dk_m * N_p_w * ev->Phi;
+        ev->T_km_dot = torque_filter_rate(p, y, ev);
+        ev->P_exc = -ev->W_t * ev->mesh.de_0 * N_p_w +
+                    (ev->mesh.dk_m * N_p_w + ev->mesh.dk_dT * ev->T_km_dot) * ev->Phi;
     }
 }
 
@@ -249,6 +273,7 @@ void hg_dyn_derivatives(const hg_dyn_params *p, const hg_inputs *u, const double
     ydot[HG_Y_E_BEAR] = ev->axle.P_bearings;
     ydot[HG_Y_E_SEAL] = ev->axle.P_seals;
     ydot[HG_Y_ETA_AXLE2] = ev->eta_axle * ev->eta_axle;
+    ydot[HG_Y_T_KM] = ev->T_km_dot;
 }
 
 double hg_dyn_stored_energy(const hg_dyn_params *p, const double *y, const hg_dyn_eval *ev)

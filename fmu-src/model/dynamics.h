@@ -25,6 +25,8 @@ enum {
     HG_Y_Q_H,    /* heat given to the air [J] */
     HG_Y_E_CHURN, HG_Y_E_BEAR, HG_Y_E_SEAL, /* the axle's other losses [J] */
     HG_Y_ETA_AXLE2, /* integral of eta_axle^2 dt [s] */
+    HG_Y_T_KM,   /* transmitted pinion torque filtered over a few mesh cycles, at which the tooth
+                    data are interpolated [N m] (docs/physics.md §10.8; constant for one level) */
     HG_NY
 };
 
@@ -65,6 +67,7 @@ typedef struct {
     double P_axle, P_in_axle, eta_axle;
     double Q_dot;      /* heat from the housing to the air [W] */
     double P_damp, P_exc; /* damper dissipation and parametric excitation power [W] */
+    double T_km_dot;   /* dT_km/dt [N m/s] */
     double W_pair[HG_MAX_PAIRS];
     hg_pair_friction pair[HG_MAX_PAIRS];
 } hg_dyn_eval;

@@ -1,4 +1,5 @@
-/* Gear-set data: reading, checking and evaluating the Fourier series (paper eqs. 1-4). */
+/* Gear-set data: reading, checking and evaluating the Fourier series (paper eqs. 1-4), per flank
+ * and torque level (docs/data-files.md, docs/physics.md §10.8). */
 #include "model/gearset.h"
 
 #include <math.h>
@@ -11,22 +12,26 @@
 #define LS_CONTACT_FLOOR 1e-3 /* load shares below this count as out of contact (docs/physics.md §10.7) */
 #define CHECK_POINTS 720      /* samples over three mesh cycles for the sanity checks */
 
-static int read_series(const hg_datafile *f, const char *name, hg_series *y, char *err,
-                       size_t errlen)
+static const char *const FLANK_NAMES[HG_N_FLANKS] = {"drive", "coast"};
+static const char *const SERIES_NAMES[HG_N_SERIES] = {"k_m",  "R_p",  "ls",   "R_x", "R_y",
+                                                         "up_x", "up_y", "ug_x", "ug_y"};
+
+static int read_series(const hg_datafile *f, const char *prefix, const char *name, hg_series *y,
+                       char *err, size_t errlen)
 {
-    char key[64];
+    char key[96];
     size_t ns = 0, nc = 0;
     int n_sin;
-    snprintf(key, sizeof key, "%s.mean", name);
+    snprintf(key, sizeof key, "%s%s.mean", prefix, name);
     if (hg_datafile_numbers(f, key, 1, 1, &y->mean, NULL, err, errlen)) return -1;
-    snprintf(key, sizeof key, "%s.sin", name);
+    snprintf(key, sizeof key, "%s%s.sin", prefix, name);
     n_sin = hg_datafile_count(f, key);
     if (hg_datafile_numbers(f, key, 0, HG_MAX_HARMONICS, y->s, &ns, err, errlen)) return -1;
-    snprintf(key, sizeof key, "%s.cos", name);
+    snprintf(key, sizeof key, "%s%s.cos", prefix, name);
     if (hg_datafile_numbers(f, key, 0, HG_MAX_HARMONICS, y->c, &nc, err, errlen)) return -1;
     if (ns != nc) {
-        hg_errorf(err, errlen, "series '%s': %d sine but %zu cosine coefficients", name, n_sin,
-                  nc);
+        hg_errorf(err, errlen, "series '%s%s': %d sine but %zu cosine coefficients", prefix, name,
+                  n_sin, nc);
         return -1;
     }
     y->n = (int)ns;
@@ -45,113 +50,250 @@ static int read_teeth(const hg_datafile *f, const char *key, int *N, char *err, 
     return 0;
 }
 
-static int check_positive(const char *path, const char *what, double v, double theta, char *err,
-                          size_t errlen)
+/* torque_levels: pinion torques [N m], non-negative and increasing; absent: one level. */
+static int read_levels(const char *path, const hg_datafile *f, hg_gearset *g, char *err,
+                       size_t errlen)
+{
+    int line = hg_datafile_line(f, "torque_levels");
+    size_t n, i;
+    g->n_levels = 1;
+    if (line < 0) return 0;
+    if (hg_datafile_numbers(f, "torque_levels", 1, HG_MAX_LEVELS, g->T_level, &n, err, errlen))
+        return -1;
+    for (i = 0; i < n; i++)
+        if (g->T_level[i] < 0.0 || (i > 0 && g->T_level[i] <= g->T_level[i - 1])) {
+            hg_errorf(err, errlen,
+                      "%s, line %d: torque_levels value %zu = %g N m must be >= 0 and above the "
+                      "one before: the levels must increase",
+                      path, line, i + 1, g->T_level[i]);
+            return -1;
+        }
+    g->n_levels = (int)n;
+    return 0;
+}
+
+/* flanks: 'drive' or 'drive coast'; absent: the drive data serve both flanks. */
+static int read_flanks(const char *path, const hg_datafile *f, hg_gearset *g, char *err,
+                       size_t errlen)
+{
+    int line = hg_datafile_line(f, "flanks");
+    char text[64];
+    g->n_flanks = 1;
+    if (line < 0) return 0;
+    if (hg_datafile_text(f, "flanks", text, sizeof text, err, errlen)) return -1;
+    if (strcmp(text, "drive coast") == 0)
+        g->n_flanks = 2;
+    else if (strcmp(text, "drive") != 0) {
+        hg_errorf(err, errlen, "%s, line %d: flanks '%s': must be 'drive' or 'drive coast'", path,
+                  line, text);
+        return -1;
+    }
+    if (g->n_flanks == 2 && hg_datafile_count(f, "coast.1.k_m.mean") < 0) {
+        hg_errorf(err, errlen,
+                  "%s, line %d: flanks '%s' asks for a coast flank, but the file has no coast "
+                  "series (no key 'coast.1.k_m.mean')",
+                  path, line, text);
+        return -1;
+    }
+    return 0;
+}
+
+/* The series of every flank and level: keys '<flank>.<level>.<series>.*' when the file has
+ * torque_levels or flanks, else the plain '<series>.*' of the one-series layout. */
+static int read_blocks(const hg_datafile *f, int layered, hg_gearset *g, char *err, size_t errlen)
+{
+    int fl, lv, i;
+    for (fl = 0; fl < g->n_flanks; fl++)
+        for (lv = 0; lv < g->n_levels; lv++) {
+            char prefix[32] = "";
+            if (layered) snprintf(prefix, sizeof prefix, "%s.%d.", FLANK_NAMES[fl], lv + 1);
+            for (i = 0; i < HG_N_SERIES; i++)
+                if (read_series(f, prefix, SERIES_NAMES[i], &g->s[fl][lv].y[i], err, errlen))
+                    return -1;
+        }
+    return 0;
+}
+
+static int check_positive(const char *path, const char *where, const char *what, double v,
+                          double theta, char *err, size_t errlen)
 {
     if (v > 0.0 && isfinite(v)) return 0;
-    hg_errorf(err, errlen, "%s: series %s evaluates to %g at mesh angle %.3f rad: must be > 0",
-              path, what, v, theta);
+    hg_errorf(err, errlen, "%s: series %s%s evaluates to %g at mesh angle %.3f rad: must be > 0",
+              path, where, what, v, theta);
     return -1;
 }
 
-/* The series must describe a physical mesh everywhere, not only at the fitted samples. */
-static int check_gearset(const char *path, const hg_gearset *g, char *err, size_t errlen)
+/* One flank at one level must describe a physical mesh everywhere, not only at the fitted
+ * samples. */
+static int check_block(const char *path, const char *where, const hg_flank_series *b, char *err,
+                       size_t errlen)
 {
     int j, k;
     for (j = 0; j < CHECK_POINTS; j++) {
         double theta = 3.0 * TWO_PI * j / CHECK_POINTS, raw_sum = 0.0;
-        hg_mesh_point m;
-        hg_pair_geometry p;
-        hg_gearset_mesh(g, theta, &m);
-        if (check_positive(path, "k_m", m.k_m, theta, err, errlen) ||
-            check_positive(path, "R_p", m.R_p, theta, err, errlen))
+        hg_harmonics h;
+        hg_harmonics_eval(theta, HG_MAX_HARMONICS, &h);
+        if (check_positive(path, where, "k_m", hg_series_value(&b->y[HG_S_K_M], &h), theta, err,
+                           errlen) ||
+            check_positive(path, where, "R_p", hg_series_value(&b->y[HG_S_R_P], &h), theta, err,
+                           errlen))
             return -1;
-        hg_gearset_pairs(g, theta, 1, &p);
         for (k = 0; k < HG_MAX_PAIRS; k++) {
-            hg_harmonics h;
-            hg_harmonics_eval((theta + TWO_PI * k) / 3.0, g->ls.n, &h);
-            raw_sum += hg_series_value(&g->ls, &h);
-            if (p.ls[k] > 0.0 && (check_positive(path, "R_x", p.R_x[k], theta, err, errlen) ||
-                                  check_positive(path, "R_y", p.R_y[k], theta, err, errlen)))
+            double ls;
+            hg_harmonics_eval((theta + TWO_PI * k) / 3.0, HG_MAX_HARMONICS, &h);
+            ls = hg_series_value(&b->y[HG_S_LS], &h);
+            raw_sum += ls;
+            if (ls - LS_CONTACT_FLOOR > 0.0 &&
+                (check_positive(path, where, "R_x", hg_series_value(&b->y[HG_S_R_X], &h), theta,
+                                err, errlen) ||
+                 check_positive(path, where, "R_y", hg_series_value(&b->y[HG_S_R_Y], &h), theta,
+                                err, errlen)))
                 return -1;
         }
         if (fabs(raw_sum - 1.0) > 0.05) {
             hg_errorf(err, errlen,
-                      "%s: the load shares of the three pairs sum to %.4f at mesh angle %.3f rad "
+                      "%s: the load shares of the three pairs %ssum to %.4f at mesh angle %.3f rad "
                       "(must be 1 within 0.05)",
-                      path, raw_sum, theta);
+                      path, where, raw_sum, theta);
             return -1;
         }
     }
     return 0;
 }
 
+static int check_gearset(const char *path, const hg_gearset *g, char *err, size_t errlen)
+{
+    int fl, lv;
+    for (fl = 0; fl < g->n_flanks; fl++)
+        for (lv = 0; lv < g->n_levels; lv++) {
+            char where[64] = "";
+            if (g->n_levels > 1 || g->n_flanks > 1)
+                snprintf(where, sizeof where, "(%s flank, %g N m) ", FLANK_NAMES[fl],
+                         g->T_level[lv]);
+            if (check_block(path, where, &g->s[fl][lv], err, errlen)) return -1;
+        }
+    return 0;
+}
+
 int hg_gearset_load(const char *path, hg_gearset *g, char *err, size_t errlen)
 {
-    static const char *const names[] = {"k_m", "R_p", "e_0", "ls", "R_x",
-                                        "R_y", "up_x", "up_y", "ug_x", "ug_y"};
-    hg_series *const series[] = {&g->k_m, &g->R_p, &g->e_0, &g->ls, &g->R_x,
-                                 &g->R_y, &g->up_x, &g->up_y, &g->ug_x, &g->ug_y};
     hg_datafile *f = hg_datafile_load(path, "hypoid-gearset", 1, err, errlen);
-    size_t i;
-    int rc = -1;
+    int rc = -1, layered;
     if (!f) return -1;
     memset(g, 0, sizeof *g);
+    layered = hg_datafile_count(f, "torque_levels") >= 0 || hg_datafile_count(f, "flanks") >= 0;
     if (hg_datafile_text(f, "name", g->name, sizeof g->name, err, errlen) ||
-        read_teeth(f, "N_p", &g->N_p, err, errlen) || read_teeth(f, "N_g", &g->N_g, err, errlen))
+        read_teeth(f, "N_p", &g->N_p, err, errlen) || read_teeth(f, "N_g", &g->N_g, err, errlen) ||
+        read_levels(path, f, g, err, errlen) || read_flanks(path, f, g, err, errlen) ||
+        read_series(f, "", "e_0", &g->e_0, err, errlen) ||
+        read_blocks(f, layered, g, err, errlen) || hg_datafile_check_all_used(f, err, errlen))
         goto done;
-    for (i = 0; i < sizeof names / sizeof names[0]; i++)
-        if (read_series(f, names[i], series[i], err, errlen)) goto done;
-    if (hg_datafile_check_all_used(f, err, errlen)) goto done;
     rc = check_gearset(path, g, err, errlen);
 done:
     hg_datafile_free(f);
     return rc;
 }
 
-void hg_gearset_mesh(const hg_gearset *g, double theta, hg_mesh_point *out)
+void hg_gearset_scale(hg_gearset *g, double k_m_scale, double e_0_scale)
+{
+    int fl, lv;
+    for (fl = 0; fl < g->n_flanks; fl++)
+        for (lv = 0; lv < g->n_levels; lv++) hg_series_scale(&g->s[fl][lv].y[HG_S_K_M], k_m_scale);
+    hg_series_scale(&g->e_0, e_0_scale);
+}
+
+/* Level i and the weight w of level i + 1 at torque T (linear, held beyond the ends), and
+ * dw/dT. */
+typedef struct {
+    const hg_flank_series *lo, *hi;
+    double w, dw_dT;
+} hg_level_blend;
+
+static void blend_at(const hg_gearset *g, int flank, double T, hg_level_blend *b)
+{
+    const hg_flank_series *s = g->s[flank < g->n_flanks ? flank : HG_FLANK_DRIVE];
+    int i = 0, n = g->n_levels;
+    b->lo = b->hi = &s[0];
+    b->w = b->dw_dT = 0.0;
+    if (n == 1 || T <= g->T_level[0]) return;
+    if (T >= g->T_level[n - 1]) {
+        b->lo = b->hi = &s[n - 1];
+        return;
+    }
+    while (T > g->T_level[i + 1]) i++;
+    b->lo = &s[i];
+    b->hi = &s[i + 1];
+    b->dw_dT = 1.0 / (g->T_level[i + 1] - g->T_level[i]);
+    b->w = (T - g->T_level[i]) * b->dw_dT;
+}
+
+static double blended(const hg_level_blend *b, int i, const hg_harmonics *h)
+{
+    double lo = hg_series_value(&b->lo->y[i], h);
+    return b->w > 0.0 ? lo + b->w * (hg_series_value(&b->hi->y[i], h) - lo) : lo;
+}
+
+/* Most harmonics among series first .. last of both levels. */
+static int harmonics_needed(const hg_level_blend *b, int first, int last)
+{
+    int i, n = 0;
+    for (i = first; i <= last; i++) {
+        if (b->lo->y[i].n > n) n = b->lo->y[i].n;
+        if (b->hi->y[i].n > n) n = b->hi->y[i].n;
+    }
+    return n;
+}
+
+void hg_gearset_mesh(const hg_gearset *g, int flank, double T, double theta, hg_mesh_point *out)
 {
     hg_harmonics h;
-    int n = g->k_m.n;
-    if (g->R_p.n > n) n = g->R_p.n;
-    if (g->e_0.n > n) n = g->e_0.n;
-    hg_harmonics_eval(theta, n, &h);
-    out->k_m = hg_series_value(&g->k_m, &h);
-    out->dk_m = hg_series_slope(&g->k_m, &h);
-    out->R_p = hg_series_value(&g->R_p, &h);
+    hg_level_blend b;
+    const hg_series *lo, *hi;
+    int n;
+    blend_at(g, flank, T, &b);
+    n = harmonics_needed(&b, HG_S_K_M, HG_S_R_P);
+    hg_harmonics_eval(theta, g->e_0.n > n ? g->e_0.n : n, &h);
+    lo = &b.lo->y[HG_S_K_M];
+    hi = &b.hi->y[HG_S_K_M];
+    out->k_m = blended(&b, HG_S_K_M, &h);
+    out->dk_dT = b.dw_dT * (hg_series_value(hi, &h) - hg_series_value(lo, &h));
+    out->dk_m = hg_series_slope(lo, &h) + b.w * (hg_series_slope(hi, &h) - hg_series_slope(lo, &h));
+    out->R_p = blended(&b, HG_S_R_P, &h);
     out->e_0 = hg_series_value(&g->e_0, &h);
     out->de_0 = hg_series_slope(&g->e_0, &h);
 }
 
-static int max_harmonics(const hg_gearset *g)
+void hg_gearset_means(const hg_gearset *g, int flank, double T, double *k_m0, double *R_p0)
 {
-    const hg_series *const s[] = {&g->ls, &g->R_x, &g->R_y, &g->up_x, &g->up_y, &g->ug_x,
-                                  &g->ug_y};
-    int i, n = 0;
-    for (i = 0; i < 7; i++)
-        if (s[i]->n > n) n = s[i]->n;
-    return n;
+    hg_level_blend b;
+    blend_at(g, flank, T, &b);
+    *k_m0 = b.lo->y[HG_S_K_M].mean + b.w * (b.hi->y[HG_S_K_M].mean - b.lo->y[HG_S_K_M].mean);
+    *R_p0 = b.lo->y[HG_S_R_P].mean + b.w * (b.hi->y[HG_S_R_P].mean - b.lo->y[HG_S_R_P].mean);
 }
 
-void hg_gearset_pairs(const hg_gearset *g, double theta, int with_contact, hg_pair_geometry *out)
+void hg_gearset_pairs(const hg_gearset *g, int flank, double T, double theta, int with_contact,
+                      hg_pair_geometry *out)
 {
-    int k, n = with_contact ? max_harmonics(g) : g->ls.n;
+    int k, n;
     double sum = 0.0;
+    hg_level_blend b;
+    blend_at(g, flank, T, &b);
+    n = harmonics_needed(&b, HG_S_LS, with_contact ? HG_S_UG_Y : HG_S_LS);
     for (k = 0; k < HG_MAX_PAIRS; k++) {
         hg_harmonics h;
         double ls;
         hg_harmonics_eval((theta + TWO_PI * k) / 3.0, n, &h);
         /* clamp to [0, 1] continuously, dropping the truncation ripple in the no-contact gap */
-        ls = hg_series_value(&g->ls, &h) - LS_CONTACT_FLOOR;
+        ls = blended(&b, HG_S_LS, &h) - LS_CONTACT_FLOOR;
         out->ls[k] = ls < 0.0 ? 0.0 : (ls > 1.0 ? 1.0 : ls);
         sum += out->ls[k];
         if (!with_contact) continue;
-        out->R_x[k] = hg_series_value(&g->R_x, &h);
-        out->R_y[k] = hg_series_value(&g->R_y, &h);
-        out->up[k][0] = hg_series_value(&g->up_x, &h);
-        out->up[k][1] = hg_series_value(&g->up_y, &h);
-        out->ug[k][0] = hg_series_value(&g->ug_x, &h);
-        out->ug[k][1] = hg_series_value(&g->ug_y, &h);
+        out->R_x[k] = blended(&b, HG_S_R_X, &h);
+        out->R_y[k] = blended(&b, HG_S_R_Y, &h);
+        out->up[k][0] = blended(&b, HG_S_UP_X, &h);
+        out->up[k][1] = blended(&b, HG_S_UP_Y, &h);
+        out->ug[k][0] = blended(&b, HG_S_UG_X, &h);
+        out->ug[k][1] = blended(&b, HG_S_UG_Y, &h);
     }
     for (k = 0; k < HG_MAX_PAIRS; k++) out->ls[k] = sum > 0.0 ? out->ls[k] / sum : 1.0 / 3.0;
 }

@@ -1,5 +1,5 @@
 /* Gear-set tooth contact data (docs/data-files.md, `hypoid-gearset 1`) and its evaluation at a
- * mesh angle theta = N_p phi_p. */
+ * mesh angle theta = N_p phi_p, on a flank and at a transmitted torque. */
 #ifndef HG_GEARSET_H
 #define HG_GEARSET_H
 
@@ -8,29 +8,53 @@
 #include "model/fourier.h"
 #include "tribo/pair_contact.h"
 
+#define HG_MAX_LEVELS 8 /* torque levels a gear-set file may hold */
+enum { HG_FLANK_DRIVE, HG_FLANK_COAST, HG_N_FLANKS };
+
+/* The series of one flank at one torque level: k_m [N/m] and R_p [m] over one mesh cycle
+ * (psi = theta); per pair over three mesh cycles (pair k at psi_k = (theta + 2 pi (k - 1)) / 3)
+ * the load share ls [1], the reduced radii R_x, R_y [m], the pinion surface velocity up_x, up_y
+ * per unit pinion speed and the gear's ug_x, ug_y per unit gear speed [m]. */
+enum {
+    HG_S_K_M, HG_S_R_P, HG_S_LS, HG_S_R_X, HG_S_R_Y, HG_S_UP_X, HG_S_UP_Y, HG_S_UG_X, HG_S_UG_Y,
+    HG_N_SERIES
+};
+typedef struct {
+    hg_series y[HG_N_SERIES];
+} hg_flank_series;
+
 typedef struct {
     char name[128];
     int N_p, N_g;
-    hg_series k_m, R_p, e_0; /* one mesh cycle, psi = theta [N/m, m, m] */
-    /* three mesh cycles, pair k at psi_k = (theta + 2 pi (k - 1)) / 3 */
-    hg_series ls;         /* load share [1] */
-    hg_series R_x, R_y;   /* reduced radii [m] */
-    hg_series up_x, up_y; /* pinion surface velocity per unit pinion speed [m] */
-    hg_series ug_x, ug_y; /* gear surface velocity per unit gear speed [m] */
+    hg_series e_0;                 /* unloaded static transmission error, one cycle [m]: it
+                                      defines x, so both flanks and all torques share it */
+    int n_levels;                  /* 1 for a file without torque_levels */
+    double T_level[HG_MAX_LEVELS]; /* pinion torque of each level, increasing [N m] */
+    int n_flanks;                  /* 1: the coast flank uses the drive flank's series */
+    hg_flank_series s[HG_N_FLANKS][HG_MAX_LEVELS];
 } hg_gearset;
 
 /* Reads and checks a gear-set file; err names the file and line on failure. */
 int hg_gearset_load(const char *path, hg_gearset *g, char *err, size_t errlen);
 
+/* Scales every level's k_m on both flanks and e_0 (k_m_scale, e_0_scale). */
+void hg_gearset_scale(hg_gearset *g, double k_m_scale, double e_0_scale);
+
+/* Means of k_m [N/m] and R_p [m] over a mesh cycle on `flank` at pinion torque T [N m]. */
+void hg_gearset_means(const hg_gearset *g, int flank, double T, double *k_m0, double *R_p0);
+
 typedef struct {
     double k_m;   /* mesh stiffness [N/m] */
     double dk_m;  /* dk_m/dtheta [N/m/rad] */
+    double dk_dT; /* dk_m/dT of the torque interpolation [N/m/(N m)] */
     double R_p;   /* pinion contact radius [m] */
     double e_0;   /* unloaded static transmission error [m] */
     double de_0;  /* de_0/dtheta [m/rad] */
 } hg_mesh_point;
 
-void hg_gearset_mesh(const hg_gearset *g, double theta, hg_mesh_point *out);
+/* The mesh series of `flank` interpolated linearly on the pinion torque T [N m] between the
+ * levels (held beyond the first and the last). */
+void hg_gearset_mesh(const hg_gearset *g, int flank, double T, double theta, hg_mesh_point *out);
 
 typedef struct {
     double ls[HG_MAX_PAIRS];     /* load shares, clamped and renormalised to sum 1 */
@@ -39,7 +63,9 @@ typedef struct {
     double ug[HG_MAX_PAIRS][2];  /* per unit gear speed [m] */
 } hg_pair_geometry;
 
-/* Load shares always; radii and velocities only when with_contact is non-zero. */
-void hg_gearset_pairs(const hg_gearset *g, double theta, int with_contact, hg_pair_geometry *out);
+/* Load shares always; radii and velocities only when with_contact is non-zero; `flank` and T as
+ * for hg_gearset_mesh. */
+void hg_gearset_pairs(const hg_gearset *g, int flank, double T, double theta, int with_contact,
+                      hg_pair_geometry *out);
 
 #endif

@@ -1,6 +1,7 @@
 /* Model set-up: see setup.h. */
 #include "model/setup.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -84,8 +85,7 @@ static int load_gearset(hg_setup *s, const char *resource_dir, const hg_vars *v,
     if (resolve(&f, resource_dir, err, errlen)) return -1;
     if (hg_gearset_load(f.path, &s->gear, why, sizeof why))
         return load_failed(&f, why, err, errlen);
-    hg_series_scale(&s->gear.k_m, v->k_m_scale);
-    hg_series_scale(&s->gear.e_0, v->e_0_scale);
+    hg_gearset_scale(&s->gear, v->k_m_scale, v->e_0_scale);
     return 0;
 }
 
@@ -232,8 +232,8 @@ static void dynamics_params(hg_setup *s, const hg_vars *v)
     p->backlash.eps = p->mesh == HG_MESH_MODEL_VARYING && v->backlash_model == HG_BACKLASH_MODEL_SMOOTHED
                           ? v->backlash_smoothing
                           : 0.0;
-    p->k_m0 = s->gear.k_m.mean;
-    p->R_p0 = s->gear.R_p.mean;
+    hg_gearset_means(&s->gear, v->T_s < 0.0 ? HG_FLANK_COAST : HG_FLANK_DRIVE, fabs(v->T_s),
+                     &p->k_m0, &p->R_p0);
     p->ratio = (double)s->gear.N_g / s->gear.N_p;
     p->gear = &s->gear;
     p->friction.model = v->friction_model;
@@ -261,6 +261,7 @@ static void tolerances(hg_setup *s, const hg_vars *v)
     t[HG_Y_ETA2] = t[HG_Y_ETA_AXLE2] = 1e-9;
     t[HG_Y_E_CHURN] = t[HG_Y_E_BEAR] = t[HG_Y_E_SEAL] = t[HG_Y_Q_H] = E;
     t[HG_Y_T_OIL] = 1e-6; /* K */
+    t[HG_Y_T_KM] = 1e-3;  /* N m */
     s->rtol = v->rtol;
     s->fixed_step = v->solver == HG_SOLVER_NEWMARK;
     s->max_step = v->max_step;

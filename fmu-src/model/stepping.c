@@ -21,7 +21,8 @@ void hg_stepping_start(hg_runtime *rt, const hg_setup *s, const hg_vars *v, doub
     hg_vars_inputs(v, &rt->u0);
     rt->u_end = rt->u0;
     if (p->mesh == HG_MESH_MODEL_VARYING)
-        hg_gearset_mesh(&s->gear, 0.0, &mesh);
+        hg_gearset_mesh(&s->gear, v->T_s < 0.0 ? HG_FLANK_COAST : HG_FLANK_DRIVE, fabs(v->T_s),
+                        0.0, &mesh);
     else {
         mesh.k_m = p->k_m0;
         mesh.R_p = p->R_p0;
@@ -35,6 +36,7 @@ void hg_stepping_start(hg_runtime *rt, const hg_setup *s, const hg_vars *v, doub
     y[HG_Y_W_G] = y[HG_Y_W_W] = v->w_p0 / p->ratio;
     rt->mode = hg_backlash_mode(y[HG_Y_X], p->backlash.b);
     y[HG_Y_T_OIL] = v->T_oil0;
+    y[HG_Y_T_KM] = fabs(v->T_s);
     for (k = 0; k < HG_MAX_PAIRS; k++) rt->T_c_warm[k] = -1.0;
     rt->eta_cycle = rt->eta_axle_cycle = 1.0;
     rt->restart = 1;

@@ -1,0 +1,115 @@
+"""Layered gear-set files (docs/data-files.md): drive and coast flanks at several torque levels,
+written by `hypoid tca surrogate --loaded`, read back by the Python reader and the FMU. The FMU
+interpolates linearly on the filtered transmitted torque and uses the coast series on the back
+flank; checked against the file's own series, with the energy audit closing."""
+
+import numpy as np
+import pytest
+
+from hypoid import tca
+from hypoid.gearset_file import GearsetFileError, read_gearset, write_gearset
+from hypoid.instance import FmuError, Instance
+
+LEVELS = (25.0, 400.0)
+AUDIT = ("E_in", "E_out", "E_friction", "E_damping", "E_excitation", "E_stored")
+
+
+@pytest.fixture(scope="module")
+def layered(tmp_path_factory):
+    path = tmp_path_factory.mktemp("layers") / "set1_loaded.txt"
+    gearset = tca.loaded_surrogate(1, LEVELS)
+    write_gearset(path, gearset)
+    return path, gearset
+
+
+def test_round_trip(layered):
+    path, made = layered
+    back = read_gearset(path)
+    assert back.torque_levels == LEVELS and back.flanks == ("drive", "coast")
+    psi = np.linspace(0.0, 2.0 * np.pi, 97)
+    for key, s in made.layers.items():
+        for name, series in s.items():
+            y = series(psi)  # written to 10 significant digits
+            assert np.allclose(back.layers[key][name](psi), y, rtol=0, atol=1e-9 * np.abs(y).max())
+
+
+def test_levels_stiffen_and_flanks_differ(layered):
+    g = layered[1]
+    for flank in g.flanks:
+        assert g.layers[(flank, 2)]["k_m"].mean > 3 * g.layers[(flank, 1)]["k_m"].mean
+    assert g.layers[("coast", 1)]["R_p"].mean < g.layers[("drive", 1)]["R_p"].mean
+
+
+def _edited(path, tmp_path, old, new):
+    text = path.read_text()
+    assert old in text
+    out = tmp_path / "edited.txt"
+    out.write_text(text.replace(old, new, 1))
+    return out
+
+
+@pytest.mark.parametrize("old,new,words", [
+    ("torque_levels 25 400", "torque_levels 400 25", ["line 13", "value 2 = 25 N·m", "increase"]),
+    ("flanks drive coast", "flanks drive back", ["line 14", "flanks 'drive back'"]),
+    ("coast.2.ls.mean", "coast.2.ls.meen", ["missing key 'coast.2.ls.mean'"]),
+])
+def test_bad_layered_files_name_file_line_and_value(layered, tmp_path, old, new, words):
+    bad = _edited(layered[0], tmp_path, old, new)
+    with pytest.raises(GearsetFileError) as info:
+        read_gearset(bad)
+    for w in ["edited.txt"] + words:
+        assert w in str(info.value), (w, str(info.value))
+
+
+def test_coast_flank_missing_where_asked_for(layered, tmp_path):
+    text = layered[0].read_text()
+    cut = text[:text.index("# --- coast flank")]
+    bad = tmp_path / "no_coast.txt"
+    bad.write_text(cut)
+    with pytest.raises(GearsetFileError, match="line 14: flanks 'drive coast' asks for a coast"):
+        read_gearset(bad)
+
+
+def _series_mean_at(g, flank, T):
+    """The file's k_m mean interpolated linearly at pinion torque T, held beyond the levels."""
+    means = [g.layers[(flank, i)]["k_m"].mean for i in (1, 2)]
+    return float(np.interp(T, LEVELS, means))
+
+
+@pytest.mark.parametrize("T_s,flank", [(300.0, "drive"), (-100.0, "coast")])
+def test_fmu_interpolates_on_torque_and_takes_the_flank(layered, fmu_path, T_s, flank):
+    """Mean k_m over one mesh cycle in steady running = the file's level blend at |T_s| (the
+    filtered torque settles at the transmitted torque, within the friction's share), and the
+    audit closes while the torque, and with it the stiffness, changes."""
+    path, g = layered
+    gear = Instance(fmu_path)
+    gear.start({"gear_set_file": str(path), "load_mode": "speed", "T_s": T_s,
+                "speed_rpm": 2000.0})
+    E_0 = gear.get("E_stored")
+    while gear.t < 0.15 - 1e-9:
+        gear.step(0.005)
+    period = 60.0 / (2000.0 * 13)
+    k = []
+    for _ in range(64):
+        gear.step(period / 64)
+        k.append(gear.get("k_m"))
+    assert gear.get("contact") == (1 if flank == "drive" else -1)
+    assert np.mean(k) == pytest.approx(_series_mean_at(g, flank, abs(T_s)), rel=0.02)
+    other = "coast" if flank == "drive" else "drive"
+    assert abs(np.mean(k) - _series_mean_at(g, other, abs(T_s))) > 0.01 * np.mean(k)
+    for i in range(40):  # torque swings: the stiffness follows through the filter
+        gear.set("T_s", T_s * (1.0 + 0.5 * np.sin(0.3 * i)))
+        gear.step(0.0025)
+    v = {n: gear.get(n) for n in AUDIT}
+    residual = (v["E_in"] - v["E_out"] - v["E_friction"] - v["E_damping"] + v["E_excitation"]
+                - (v["E_stored"] - E_0))
+    assert abs(residual) < 1e-6 * abs(v["E_in"])
+
+
+def test_fmu_refuses_decreasing_levels(layered, fmu_path, tmp_path):
+    bad = _edited(layered[0], tmp_path, "torque_levels 25 400", "torque_levels 400 25")
+    gear = Instance(fmu_path)
+    with pytest.raises(FmuError) as info:
+        gear.start({"gear_set_file": str(bad)})
+    text = str(info.value) + " ".join(str(m) for m in getattr(gear, "messages", []))
+    assert "edited.txt" in text and "line 13" in text and "value 2 = 25 N m" in text, text
