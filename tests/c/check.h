@@ -5,6 +5,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 static int check_failures = 0;
 
@@ -32,5 +33,20 @@ static int check_failures = 0;
         if (check_failures) fprintf(stderr, "%d check(s) failed\n", check_failures); \
         return check_failures ? 1 : 0;                                          \
     } while (0)
+
+/* The path of the test's scratch file `name`: in $HG_TEST_TMP (ctest gives each build tree its own
+ * folder, so runs of several checkouts or platforms side by side never share a file), else in
+ * $TMPDIR or /tmp. Each call returns its own buffer of a ring of four. */
+static inline const char *test_tmp_path(const char *name)
+{
+    static char paths[4][600];
+    static int next = 0;
+    const char *dir = getenv("HG_TEST_TMP");
+    char *p = paths[next++ % 4];
+    if (!dir || !*dir) dir = getenv("TMPDIR");
+    if (!dir || !*dir) dir = "/tmp";
+    snprintf(p, sizeof paths[0], "%s/%s", dir, name);
+    return p;
+}
 
 #endif

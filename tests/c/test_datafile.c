@@ -8,9 +8,11 @@
 
 static const char *write_tmp(const char *text, size_t len)
 {
-    static char path[64];
+    char name[64];
+    const char *path;
     FILE *f;
-    snprintf(path, sizeof path, "/tmp/hg_test_datafile_%d.txt", (int)len);
+    snprintf(name, sizeof name, "hg_test_datafile_%d.txt", (int)len);
+    path = test_tmp_path(name);
     f = fopen(path, "wb");
     fwrite(text, 1, len, f);
     fclose(f);

@@ -38,10 +38,9 @@ static void not_regular_files(void)
 /* A file of n keys "k0 0" ... and, when repeat >= 0, key k<repeat> again at the end. */
 static const char *many_keys(int n, int repeat)
 {
-    static char path[64];
+    const char *path = test_tmp_path("hg_test_limits_keys.txt");
     FILE *f;
     int k;
-    snprintf(path, sizeof path, "/tmp/hg_test_limits_keys.txt");
     f = fopen(path, "w");
     fprintf(f, "hypoid-test 1\n");
     for (k = 0; k < n; k++) fprintf(f, "k%d %d\n", k, k);

@@ -61,7 +61,7 @@ static void expect_error(const char *replace_key, const char *line, const char *
         "up_x.cos\n", "up_y.mean 0.02\n", "up_y.sin\n", "up_y.cos\n", "ug_x.mean 0.03\n",
         "ug_x.sin\n", "ug_x.cos\n", "ug_y.mean 0.03\n", "ug_y.sin\n", "ug_y.cos\n"};
     char text[4096] = "", err[HG_ERRLEN] = "";
-    const char *path = "/tmp/hg_test_gearset.txt";
+    const char *path = test_tmp_path("hg_test_gearset.txt");
     size_t i;
     hg_gearset g;
     for (i = 0; i < sizeof base / sizeof base[0]; i++) {
@@ -107,7 +107,7 @@ static int load_layered(const char *levels, const char *flanks, int coast_blocks
                         char *err, size_t errlen)
 {
     static char text[16384];
-    const char *path = "/tmp/hg_test_gearset_layered.txt";
+    const char *path = test_tmp_path("hg_test_gearset_layered.txt");
     snprintf(text, sizeof text, "hypoid-gearset 1\nname layered\nN_p 13\nN_g 36\n%s%s"
              "e_0.mean 0\ne_0.sin 1e-6\ne_0.cos 0\n", levels, flanks);
     add_block(text, "drive.1.", 1.0e8, 0.021, 0.4);
@@ -170,7 +170,7 @@ static void layered(void)
     CHECK(load_layered("torque_levels 50 250 400\n", "flanks drive coast\n", 1, &g, err,
                        sizeof err) != 0);
     CHECK(strstr(err, "missing key 'drive.3.k_m.mean'") != NULL);
-    CHECK(strstr(err, "/tmp/hg_test_gearset_layered.txt") != NULL);
+    CHECK(strstr(err, "hg_test_gearset_layered.txt") != NULL);
 }
 
 int main(void)

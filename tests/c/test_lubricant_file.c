@@ -48,26 +48,7 @@ static const char *good =
     "c_p 2090\n"
     "rho_15 870\n";
 
-/* temporary file: in $TMPDIR or /tmp when writable, else in the working directory */
-static const char *tmp_path(void)
-{
-    static char path[600];
-    const char *dirs[3];
-    int i;
-    dirs[0] = getenv("TMPDIR");
-    dirs[1] = "/tmp";
-    dirs[2] = ".";
-    for (i = 0; i < 3; i++) {
-        FILE *fp;
-        if (!dirs[i] || !*dirs[i]) continue;
-        snprintf(path, sizeof path, "%s/hg_test_lubricant.tmp", dirs[i]);
-        if ((fp = fopen(path, "w")) != NULL) {
-            fclose(fp);
-            return path;
-        }
-    }
-    return "hg_test_lubricant.tmp";
-}
+static const char *tmp_path(void) { return test_tmp_path("hg_test_lubricant.tmp"); }
 
 /* writes text with line `key` replaced by `repl` (NULL: deleted; key NULL: text unchanged) and
  * loads it; returns the loader's result and leaves the message in err */
