@@ -71,7 +71,7 @@ static void many_keys_are_fast(void)
 static void first_repeat_in_file_order(void)
 {
     const char *text = "hypoid-test 1\nb 1\na 1\nc 1\nc 2\na 2\n";
-    const char *path = "/tmp/hg_test_limits_order.txt";
+    const char *path = test_tmp_path("hg_test_limits_order.txt");
     char err[HG_ERRLEN] = "";
     FILE *f = fopen(path, "w");
     fputs(text, f);

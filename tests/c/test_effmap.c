@@ -8,7 +8,7 @@
 #include "io/datafile.h"
 #include "model/effmap.h"
 
-#define PATH "/tmp/hg_test_effmap.txt"
+#define PATH test_tmp_path("hg_test_effmap.txt")
 
 static const double W[] = {10, 50, 100, 300}, T[] = {10, 50, 100}, K[] = {300, 350};
 
