@@ -3,7 +3,7 @@
     hypoid tca surrogate (--set N --out FILE | --all --out-dir DIR)
                          [--harmonics 8] [--contact-harmonics 32]
                          [--loaded [--torques 25 50 100 200 400]]
-    hypoid tca import TABLE.csv --out FILE [--speed-rpm RPM] [--name TEXT]
+    hypoid tca import TABLE.csv [TABLE2.csv ...] --out FILE [--speed-rpm RPM] [--name TEXT]
                       [--harmonics 8] [--contact-harmonics 32]
     hypoid tca export-csv --set N --out TABLE.csv [--speed-rpm 2000] [--rows 360]
 
@@ -23,7 +23,8 @@ from hypoid.gearset_file import (MAX_HARMONICS, MAX_LEVELS, MESH_SERIES, PAIR_SE
                                  Gearset, write_gearset)
 from hypoid.tca_fit import (CONTACT_HARMONICS, HARMONICS, N_SAMPLES, fit, fit_error, fit_gearset,
                             fit_notes, grid)
-from hypoid.tca_table import DATA_COLUMNS, TableError, import_table  # noqa: F401 (re-exported)
+from hypoid.tca_table import (DATA_COLUMNS, TableError, import_table,  # noqa: F401 (re-exported)
+                              import_tables)
 
 
 # --- surrogate ---------------------------------------------------------------------------------
@@ -186,7 +187,8 @@ def _parser():
     s.add_argument("--torques", type=float, nargs="+", default=list(tl.TORQUES),
                    help="pinion torque levels of --loaded [N·m], increasing")
     i = sub.add_parser("import", help="gear-set file from a TCA table (docs/tca-import.md)")
-    i.add_argument("table", help="CSV table")
+    i.add_argument("table", nargs="+", help="CSV table(s): several with torque_Nm (and flank) rows "
+                   "make a file of several torque levels and both flanks")
     i.add_argument("--out", required=True, help="output gear-set file")
     i.add_argument("--speed-rpm", type=float, help="pinion speed of the velocity columns [rpm]")
     i.add_argument("--name", help="name written into the gear-set file")
@@ -208,8 +210,8 @@ def _gearsets(args):
         if not 0 <= n <= MAX_HARMONICS:
             raise ValueError(f"harmonics must be 0..{MAX_HARMONICS}, not {n}")
     if args.command == "import":
-        return [(args.out, import_table(args.table, args.speed_rpm, args.harmonics,
-                                        args.contact_harmonics, args.name))]
+        return [(args.out, import_tables(args.table, args.speed_rpm, args.harmonics,
+                                         args.contact_harmonics, args.name))]
     if args.all != bool(args.out_dir) or args.all == bool(args.out):
         raise ValueError("use --set N --out FILE or --all --out-dir DIR")
     sets = sorted(sur.TABLE_1) if args.all else [args.set]
@@ -230,7 +232,7 @@ def _run(args):
         write_gearset(path, gearset)
         print(f"wrote {path}")
         if gearset.layered:
-            print(f"  {len(gearset.flanks)} flanks x {len(gearset.torque_levels)} torque levels")
+            print(f"  {len(gearset.flanks)} flank(s) x {len(gearset.torque_levels)} torque levels")
             continue
         for key in MESH_SERIES + PAIR_SERIES:
             print(f"  {key:5} [{UNITS[key]}] {gearset.notes[key]}")

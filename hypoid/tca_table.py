@@ -10,7 +10,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from hypoid import tca_surrogate as sur
-from hypoid.gearset_file import MESH_SERIES, PAIR_SERIES, UNITS, Gearset
+from hypoid.gearset_file import (FLANK_SERIES, MAX_LEVELS, MESH_SERIES, PAIR_SERIES, UNITS,
+                                 Gearset)
 from hypoid.tca_fit import (CONTACT_HARMONICS, HARMONICS, N_SAMPLES, fit_gearset, fit_notes, grid,
                             resample)
 
@@ -26,7 +27,8 @@ RADIUS_COLUMNS = {"R_x": ("r_px_mm", "r_gx_mm"), "R_y": ("r_py_mm", "r_gy_mm")}
 VELOCITY_COLUMNS = {"up_x": "up_x_m_s", "up_y": "up_y_m_s", "ug_x": "ug_x_m_s", "ug_y": "ug_y_m_s"}
 CONTACT_COLUMNS = ["r_px_mm", "r_py_mm", "r_gx_mm", "r_gy_mm"] + list(VELOCITY_COLUMNS.values())
 DATA_COLUMNS = list(MESH_COLUMNS) + ["ls"] + CONTACT_COLUMNS
-META_KEYS = ("name", "N_p", "N_g", "speed_rpm")
+META_KEYS = ("name", "N_p", "N_g", "speed_rpm", "torque_Nm", "flank")
+FLANK_NAMES = ("drive", "coast")
 
 
 class TableError(ValueError):
@@ -377,3 +379,94 @@ def import_table(path, speed_rpm=None, harmonics=HARMONICS, contact_harmonics=CO
     ]
     notes = fit_notes(series, checks, "the table rows")
     return Gearset(name or checked.name, checked.N_p, checked.N_g, series, comments, notes)
+
+
+# --- several tables: both flanks at several torques (docs/tca-import.md) ----------------------
+
+def _table_load(table):
+    """(flank, torque [N·m] or None, line of the torque row) from a table's metadata."""
+    line, flank = table.meta.get("flank", (None, "drive"))
+    if flank not in FLANK_NAMES:
+        _fail(table, line, None, flank, "flank must be 'drive' or 'coast'")
+    if "torque_Nm" not in table.meta:
+        return flank, None, None
+    t_line, text = table.meta["torque_Nm"]
+    torque = _to_float(text)
+    if not (math.isfinite(torque) and torque >= 0.0):
+        _fail(table, t_line, None, text, "torque_Nm must be a pinion torque >= 0 [N·m]")
+    return flank, torque, t_line
+
+
+def _one_gear_set(tables):
+    """Every table must describe the same gear set: equal N_p and N_g."""
+    first = tables[0]
+    for table in tables[1:]:
+        for key in ("N_p", "N_g"):
+            if _meta_int(table, key) != _meta_int(first, key):
+                _fail(table, table.meta[key][0], None, table.meta[key][1],
+                      f"{key} differs from {_meta_int(first, key)} in {first.path}: the flanks "
+                      "and torque levels must describe one gear set (one period, three pairs)")
+
+
+def _levels(tables):
+    """{(flank, torque): table} and the drive flank's increasing torque levels."""
+    by_load = {}
+    for table in tables:
+        flank, torque, line = _table_load(table)
+        if torque is None:
+            _fail(table, None, None, None, "several tables need a 'torque_Nm,<pinion torque>' row "
+                  "each (and 'flank,coast' for the back flank's)")
+        if (flank, torque) in by_load:
+            _fail(table, line, None, torque, f"a second {flank} table at {torque:g} N·m "
+                  f"(the first is {by_load[(flank, torque)].path})")
+        by_load[(flank, torque)] = table
+    levels = sorted(t for f, t in by_load if f == "drive")
+    if not levels:
+        _fail(tables[0], None, None, None, "no drive-flank table ('flank,drive' or no flank row)")
+    for (flank, torque), table in by_load.items():
+        if flank == "coast" and torque not in levels:
+            _fail(table, table.meta["torque_Nm"][0], None, torque,
+                  f"a coast table at {torque:g} N·m but no drive table there (drive levels: "
+                  f"{', '.join(f'{t:g}' for t in levels)} N·m): both flanks need the same levels")
+    coast = [t for f, t in by_load if f == "coast"]
+    if coast and len(coast) != len(levels):
+        missing = [t for t in levels if t not in coast]
+        at = ", ".join(f"{t:g}" for t in missing)
+        _fail(tables[0], None, None, None, f"coast tables missing at {at} N·m: with any coast "
+              "table every torque level needs one")
+    if len(levels) > MAX_LEVELS:
+        _fail(tables[0], None, None, None, f"{len(levels)} torque levels: at most {MAX_LEVELS}")
+    return by_load, levels
+
+
+def import_tables(paths, speed_rpm=None, harmonics=HARMONICS, contact_harmonics=CONTACT_HARMONICS,
+                  name=None):
+    """A Gearset from one table, or a layered one from tables of several torques and flanks."""
+    tables = [read_table(p) for p in paths]
+    if len(tables) == 1 and not {"torque_Nm", "flank"} & set(tables[0].meta):
+        return import_table(paths[0], speed_rpm, harmonics, contact_harmonics, name)
+    _one_gear_set(tables)
+    by_load, levels = _levels(tables)
+    flanks = tuple(f for f in FLANK_NAMES if any(k[0] == f for k in by_load))
+    layers, notes = {}, {}
+    for (flank, torque), table in by_load.items():
+        checked = check_table(table, speed_rpm, harmonics, contact_harmonics)
+        samples, checks = table_samples(checked)
+        series = fit_gearset(samples, harmonics, contact_harmonics)
+        level = levels.index(torque) + 1
+        layers[(flank, level)] = {k: series[k] for k in FLANK_SERIES}
+        for key, note in fit_notes(series, checks, "the table rows").items():
+            notes[f"{flank}.{level}.{key}"] = note
+        if (flank, level) == ("drive", 1):
+            e_0, first = series["e_0"], checked
+    comments = [
+        f"Imported from {len(tables)} TCA tables by `hypoid tca import`; format docs/tca-import.md.",
+        "Flanks " + " and ".join(flanks) + " at pinion torques "
+        + ", ".join(f"{t:g}" for t in levels) + " N·m; e_0 from the drive table at "
+        f"{levels[0]:g} N·m ({os.path.basename(first.path)}).",
+        f"Fit (docs/physics.md §10.7): {N_SAMPLES} points per period, {harmonics} harmonics for "
+        f"k_m, R_p, e_0, ls and {contact_harmonics} for the contact series.",
+        "Units SI (m, N/m, rad); series format in docs/data-files.md.",
+    ]
+    return Gearset(name or first.name, first.N_p, first.N_g, {"e_0": e_0}, comments, notes,
+                   torque_levels=tuple(levels), flanks=flanks, layers=layers)

@@ -113,3 +113,68 @@ def test_fmu_refuses_decreasing_levels(layered, fmu_path, tmp_path):
         gear.start({"gear_set_file": str(bad)})
     text = str(info.value) + " ".join(str(m) for m in getattr(gear, "messages", []))
     assert "edited.txt" in text and "line 13" in text and "value 2 = 25 N m" in text, text
+
+
+# --- hypoid tca import of several tables -----------------------------------------------------
+
+def _table(tmp_path, name, torque, flank="drive", k_scale=1.0, N_p=None):
+    """The surrogate of set 1 exported as a table, with torque/flank rows, k_m scaled."""
+    path = tmp_path / name
+    tca.export_csv(1, path, rows=240)
+    lines = path.read_text().splitlines()
+    head = lines.index(next(l for l in lines if l.startswith("phi_p_deg")))
+    column = lines[head].split(",").index("k_m_N_per_m")
+    rows = []
+    for row in lines[head + 1:]:
+        cells = row.split(",")
+        cells[column] = f"{float(cells[column]) * k_scale:.10g}"
+        rows.append(",".join(cells))
+    meta = lines[:head] + [f"torque_Nm,{torque:g}", f"flank,{flank}"]
+    if N_p:
+        meta = [f"N_p,{N_p}" if l.startswith("N_p,") else l for l in meta]
+    path.write_text("\n".join(meta + [lines[head]] + rows) + "\n")
+    return str(path)
+
+
+def test_import_of_torque_levels_and_both_flanks(tmp_path):
+    paths = [_table(tmp_path, "d100.csv", 100, k_scale=2.0), _table(tmp_path, "d25.csv", 25),
+             _table(tmp_path, "c25.csv", 25, "coast"), _table(tmp_path, "c100.csv", 100, "coast")]
+    g = tca.import_tables(paths)
+    assert g.torque_levels == (25.0, 100.0) and g.flanks == ("drive", "coast")
+    ratio = g.layers[("drive", 2)]["k_m"].mean / g.layers[("drive", 1)]["k_m"].mean
+    assert ratio == pytest.approx(2.0, rel=1e-9)
+    out = tmp_path / "imported.txt"
+    write_gearset(out, g)
+    assert read_gearset(out).torque_levels == (25.0, 100.0)
+
+
+@pytest.mark.parametrize("tables,words", [
+    ([("a.csv", 25, "drive", None), ("b.csv", 50, "drive", 14)],
+     ["b.csv", "line", "value '14'", "N_p differs from 13"]),
+    ([("a.csv", 25, "drive", None), ("b.csv", 25, "drive", None)],
+     ["b.csv", "value 25", "a second drive table at 25 N·m"]),
+    ([("a.csv", 25, "drive", None), ("b.csv", 50, "coast", None)],
+     ["b.csv", "value 50", "no drive table there"]),
+    ([("a.csv", 25, "drive", None), ("b.csv", 50, "drive", None), ("c.csv", 25, "coast", None)],
+     ["coast tables missing at 50 N·m"]),
+])
+def test_import_refuses_tables_that_disagree(tmp_path, tables, words):
+    paths = [_table(tmp_path, n, t, f, N_p=p) for n, t, f, p in tables]
+    with pytest.raises(ValueError) as info:
+        tca.import_tables(paths)
+    for w in words:
+        assert w in str(info.value), (w, str(info.value))
+
+
+def test_import_cli_writes_a_layered_file_and_errors_in_one_line(tmp_path):
+    import subprocess
+    import sys
+    a, b = _table(tmp_path, "a.csv", 25), _table(tmp_path, "b.csv", 80, k_scale=1.5)
+    out = tmp_path / "two.txt"
+    run = [sys.executable, "-m", "hypoid.cli", "tca", "import", a, b, "--out", str(out)]
+    done = subprocess.run(run, capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert read_gearset(out).torque_levels == (25.0, 80.0)
+    bad = subprocess.run(run[:-2] + [a, "--out", str(out)], capture_output=True, text=True)
+    assert bad.returncode == 2 and "a second drive table at 25 N·m" in bad.stderr
+    assert "Traceback" not in bad.stderr and len(bad.stderr.strip().splitlines()) == 1
