@@ -115,6 +115,10 @@ run_tests() {
   # the C host: instantiate, initialise, a run with a state saved, serialized and restored
   # (resource URI file:///Z:/..., a drive letter)
   $wine "$win/run_fmu.exe" "Z:${dir//\//\\}" simulate 0.1
+  # a folder name that is not ASCII: the URI carries UTF-8, the FMU opens its files through UTF-16
+  local odd="$win/fmu-Zürich"
+  rm -rf "$odd" && cp -r "$dir" "$odd"
+  LC_ALL=C.UTF-8 $wine "$win/run_fmu.exe" "Z:${odd//\//\\}" simulate 0.01
   # linux64 and win64 on the same calls
   cc -std=c99 -O2 -Wall -Wextra -Werror -I"$(fmi_include)" tests/host/run_fmu.c \
     tests/host/fmu_host.c -o "$win/run_fmu_linux" -ldl -lpthread

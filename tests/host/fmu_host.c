@@ -1,5 +1,5 @@
 /* The shared parts of the C FMI hosts: see fmu_host.h. */
-#define _XOPEN_SOURCE 700 /* POSIX 2008 with realpath (Windows: _fullpath) */
+#define _XOPEN_SOURCE 700 /* POSIX 2008 with realpath (Windows: _wfullpath) */
 #include "fmu_host.h"
 
 #include <stdarg.h>
@@ -48,12 +48,18 @@ static const char *lib_error(void)
     return "Windows error (GetLastError)";
 }
 
+/* The absolute path of the directory path (in the ANSI code page, as main's argv) in UTF-8, the
+ * encoding of FMI's file URIs. */
 static int absolute_path(const char *path, char *out)
 {
+    wchar_t wide[PATH_MAX], full[PATH_MAX];
     DWORD attr;
-    if (!_fullpath(out, path, PATH_MAX)) return -1;
-    attr = GetFileAttributesA(out);
-    return attr != INVALID_FILE_ATTRIBUTES && (attr & FILE_ATTRIBUTE_DIRECTORY) ? 0 : -1;
+    if (!MultiByteToWideChar(CP_ACP, 0, path, -1, wide, PATH_MAX) ||
+        !_wfullpath(full, wide, PATH_MAX))
+        return -1;
+    attr = GetFileAttributesW(full);
+    if (attr == INVALID_FILE_ATTRIBUTES || !(attr & FILE_ATTRIBUTE_DIRECTORY)) return -1;
+    return WideCharToMultiByte(CP_UTF8, 0, full, -1, out, PATH_MAX, NULL, NULL) ? 0 : -1;
 }
 #else
 #define HOST_PLATFORM "linux64"
