@@ -36,8 +36,8 @@ static int read_source(const hg_datafile *f, const char *path, const char *what,
     for (i = 0; i < HG_HASH_HEX - 1; i++)
         if (!src->hash[i] || !strchr("0123456789abcdef", src->hash[i])) break;
     if (i != HG_HASH_HEX - 1) {
-        snprintf(err, errlen, "%s: key '%s': expected 16 hex digits (the content hash `hypoid "
-                 "effmap` writes), got '%s'", path, key, src->hash);
+        hg_errorf(err, errlen, "%s: key '%s': expected 16 hex digits (the content hash `hypoid "
+                  "effmap` writes), got '%s'", path, key, src->hash);
         return -1;
     }
     return 0;

@@ -89,3 +89,19 @@ def test_architecture_document_names_every_source_file():
         rel = f"{path.parent.name}/{path.name}"
         assert rel in text or path.name in text or f"{path.parent.name}/*.c" in text, (
             f"docs/architecture.md does not say what fmu-src/{rel} owns")
+
+
+def test_errors_are_written_by_hg_errorf():
+    """Error buffers are filled by hg_errorf (io/errmsg.c) only, FMI functions name themselves by
+    __func__, and the FMI layer has one set of state masks (fmi/instance.h)."""
+    for path in sorted(SRC.glob("*/*.c")):
+        text = path.read_text(encoding="utf-8")
+        rel = path.relative_to(SRC).as_posix()
+        if rel != "io/errmsg.c":
+            assert not re.search(r"\bv?snprintf\(\s*(err|why)\s*,", text), (
+                f"fmu-src/{rel}: write error messages with hg_errorf")
+        assert not re.search(r'\b(hg_allowed|hg_error|hg_fail)\(\w+,\s*"fmi2', text), (
+            f"fmu-src/{rel}: name the FMI function by __func__")
+        if path.parent.name == "fmi":
+            assert not re.search(r"#define \w+ \(ST_", text), (
+                f"fmu-src/{rel}: use the state masks of fmi/instance.h")
