@@ -149,6 +149,23 @@ def test_physics_document_names_files_that_exist():
     assert not missing, missing
 
 
+def test_named_documents_exist():
+    """Every docs/NAME.md the tree names (code comments, CLI help, variable descriptions, docs)
+    and every relative [link](NAME.md) between the docs is there."""
+    bad = []
+    for path, text in tracked_text_files():
+        if path == THIS:
+            continue
+        for m in re.finditer(r"\bdocs/([\w.-]+\.md)\b", text):
+            if not (ROOT / "docs" / m.group(1)).is_file():
+                bad.append(f"{path}:{line_of(text, m.start())}: docs/{m.group(1)}")
+        if path.startswith("docs/"):
+            for m in re.finditer(r"\]\(([\w.-]+\.md)(?:#[^)]*)?\)", text):
+                if not (ROOT / "docs" / m.group(1)).is_file():
+                    bad.append(f"{path}:{line_of(text, m.start())}: ({m.group(1)})")
+    assert not bad, "documents that do not exist:\n" + "\n".join(bad)
+
+
 def test_readme_points_to_the_physics_document():
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     assert "docs/physics.md" in readme
