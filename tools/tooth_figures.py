@@ -2,11 +2,13 @@
 docs/figures/km_torque.png (k_m and k_t per torque level, both flanks, each built-in set, with
 ISO 10300's full-contact k_n and the calibrated k_m0) and docs/figures/km_effect.png (what the
 loaded stiffness level does to efficiency and DTE at 2000 rpm x 50/300 N·m, through the FMU's
-k_m_scale). Usage: python tools/tooth_figures.py [--fmu build/HypoidGearPair.fmu] [--out docs/figures]
+k_m_scale, and with the layered gear-set files of `hypoid tca surrogate --loaded`, which the FMU
+interpolates on the filtered torque). Usage: python tools/tooth_figures.py [--fmu build/HypoidGearPair.fmu] [--out docs/figures]
 """
 
 import argparse
 import pathlib
+import tempfile
 
 import matplotlib
 
@@ -14,7 +16,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+from hypoid import tca  # noqa: E402
 from hypoid import tca_loaded as tl  # noqa: E402
+from hypoid.gearset_file import write_gearset  # noqa: E402
 from hypoid import tca_surrogate as sur  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
@@ -63,10 +67,11 @@ def plot_stiffness(table, out):
     fig.savefig(out / "km_torque.png", dpi=90)
 
 
-def operating_point(gear, n, torque, k_m_scale):
-    """eta_cycle, P_loss_cycle and the DTE peak to peak over the last 4 mesh cycles [1, W, m]."""
+def operating_point(gear, n, torque, data):
+    """eta_cycle, P_loss_cycle and the DTE peak to peak over the last 4 mesh cycles [1, W, m];
+    data: the tooth-data parameters (k_m_scale, or a gear_set_file)."""
     gear.start({"gear_set": n, "load_mode": "speed", "T_s": torque, "speed_rpm": POINT_RPM,
-                "n_avg_cycles": 20, "k_m_scale": k_m_scale})
+                "n_avg_cycles": 20, **data})
     while gear.t < 0.3 - 1e-9:
         gear.step(0.01)
     period = 60.0 / (POINT_RPM * sur.TABLE_1[n].N_p)
@@ -78,16 +83,21 @@ def operating_point(gear, n, torque, k_m_scale):
 
 
 def effect_table(table, fmu):
+    """Per set and torque: the k_m_scale of the loaded level and the operating point with the
+    built-in data, with that scale, and with the layered file of both flanks and five levels."""
     from hypoid.instance import Instance
     gear = Instance(fmu)
     rows = []
-    for n in SETS:
-        k_m0 = sur.GearSet(sur.TABLE_1[n]).k_m0
-        for torque in POINT_TORQUES:
-            scale = km_at(table[(n, "drive")], torque) / k_m0
-            base = operating_point(gear, n, torque, 1.0)
-            loaded = operating_point(gear, n, torque, scale)
-            rows.append((n, torque, scale, base, loaded))
+    with tempfile.TemporaryDirectory() as tmp:
+        for n in SETS:
+            k_m0 = sur.GearSet(sur.TABLE_1[n]).k_m0
+            layered = pathlib.Path(tmp) / f"gearset{n}_loaded.txt"
+            write_gearset(layered, tca.loaded_surrogate(n))
+            for torque in POINT_TORQUES:
+                scale = km_at(table[(n, "drive")], torque) / k_m0
+                rows.append((n, torque, scale, operating_point(gear, n, torque, {}),
+                             operating_point(gear, n, torque, {"k_m_scale": scale}),
+                             operating_point(gear, n, torque, {"gear_set_file": str(layered)})))
     return rows
 
 
@@ -98,8 +108,9 @@ def plot_effect(rows, out):
     for i, (what, unit, scale) in enumerate((("P_loss_cycle", "W", 1.0),
                                              ("DTE peak to peak", "µm", 1e6))):
         j = 1 if i == 0 else 2
-        ax[i].bar(x - 0.2, [r[3][j] * scale for r in rows], 0.4, label="k_m0 (calibrated)")
-        ax[i].bar(x + 0.2, [r[4][j] * scale for r in rows], 0.4, label="loaded-TCA k_m(T)")
+        for k, label in enumerate(("built-in (k_m0 calibrated)", "k_m_scale = k_m(T)/k_m0",
+                                   "layered file (both flanks, 5 levels)")):
+            ax[i].bar(x + 0.27 * (k - 1), [r[3 + k][j] * scale for r in rows], 0.27, label=label)
         ax[i].set_xticks(x, labels, fontsize=7)
         ax[i].set_ylabel(f"{what} [{unit}]")
     ax[0].legend(fontsize=7)
@@ -124,10 +135,13 @@ def main():
     rows = effect_table(table, args.fmu)
     plot_effect(rows, out)
     print("| set | T_s [N·m] | k_m_scale | eta_cycle [%] | P_loss_cycle [W] | DTE p-p [µm] |")
-    for n, t, scale, base, loaded in rows:
-        print(f"| {n} | {t:g} | {scale:.2f} | {100 * base[0]:.3f} → {100 * loaded[0]:.3f} | "
-              f"{base[1]:.1f} → {loaded[1]:.1f} ({100 * (loaded[1] / base[1] - 1):+.1f} %) | "
-              f"{1e6 * base[2]:.2f} → {1e6 * loaded[2]:.2f} |")
+    for n, t, scale, *points in rows:
+        base = points[0]
+        print(f"| {n} | {t:g} | {scale:.2f} | "
+              + " / ".join(f"{100 * p[0]:.3f}" for p in points) + " | "
+              + " / ".join(f"{p[1]:.1f}" for p in points) + " ("
+              + " / ".join(f"{100 * (p[1] / base[1] - 1):+.1f} %" for p in points[1:]) + ") | "
+              + " / ".join(f"{1e6 * p[2]:.1f}" for p in points) + " |")
 
 
 if __name__ == "__main__":
