@@ -12,10 +12,13 @@
 #define KM_FILTER_W_MIN 1.0  /* pinion speed below which the filter's time constant stops
                                 growing [rad/s] */
 
-/* The flank whose tooth data apply: the back flank can touch only for x < 0. */
-static int active_flank(const double *y)
+/* The flank whose tooth data apply: the back flank's in back contact (the exact dead zone's
+ * mode, so that the data change where the solver restarts at the contact change), else x < 0 for
+ * the smoothed dead zone, which has no modes. */
+static int active_flank(const hg_dyn_params *p, int mode, double x)
 {
-    return y[HG_Y_X] < 0.0 ? HG_FLANK_COAST : HG_FLANK_DRIVE;
+    int back = p->backlash.eps == 0.0 ? mode == HG_MODE_BACK : x < 0.0;
+    return back ? HG_FLANK_COAST : HG_FLANK_DRIVE;
 }
 
 static double shaft1_torque(const hg_dyn_params *p, const double *y)
@@ -62,7 +65,8 @@ static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn
 {
     double w_p = y[HG_Y_W_P];
     if (p->mesh == HG_MESH_MODEL_VARYING) {
-        hg_gearset_mesh(p->gear, active_flank(y), y[HG_Y_T_KM], p->gear->N_p * y[HG_Y_PHI_P],
+        ev->flank = active_flank(p, mode, y[HG_Y_X]);
+        hg_gearset_mesh(p->gear, ev->flank, y[HG_Y_T_KM], p->gear->N_p * y[HG_Y_PHI_P],
                         &ev->mesh);
         ev->f = hg_backlash_f(&p->backlash, y[HG_Y_X], mode);
         ev->Phi = hg_backlash_potential(&p->backlash, y[HG_Y_X], mode);
@@ -89,7 +93,7 @@ static void pair_friction(const hg_dyn_params *p, const double *y,
     int k, with_contact = p->friction.model != HG_FRICTION_MODEL_NONE || all_pairs;
     double w_p = y[HG_Y_W_P], w_g = y[HG_Y_W_G], W = ev->W_drive + ev->W_coast;
     hg_pair_geometry geo;
-    hg_gearset_pairs(p->gear, active_flank(y), y[HG_Y_T_KM], p->gear->N_p * y[HG_Y_PHI_P],
+    hg_gearset_pairs(p->gear, ev->flank, y[HG_Y_T_KM], p->gear->N_p * y[HG_Y_PHI_P],
                      with_contact, &geo);
     for (k = 0; k < HG_MAX_PAIRS; k++) {
         hg_pair_contact c;

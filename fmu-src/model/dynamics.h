@@ -68,6 +68,8 @@ typedef struct {
     double Q_dot;      /* heat from the housing to the air [W] */
     double P_damp, P_exc; /* damper dissipation and parametric excitation power [W] */
     double T_km_dot;   /* dT_km/dt [N m/s] */
+    int flank;         /* HG_FLANK_DRIVE or _COAST: whose tooth data apply (the drive flank's
+                          off the varying mesh) */
     double W_pair[HG_MAX_PAIRS];
     hg_pair_friction pair[HG_MAX_PAIRS];
 } hg_dyn_eval;
