@@ -173,7 +173,16 @@ static void ehl_params(hg_setup *s, const hg_vars *v)
     e->k_f_override = v->k_f;
     e->hertz = v->hertz_model == HG_HERTZ_MODEL_APPROX ? HG_HERTZ_APPROX : HG_HERTZ_EXACT;
     e->roelands_Z = v->roelands_z == HG_ROELANDS_Z_EXACT ? HG_Z_EXACT : HG_Z_SIMPLE;
-    e->shear_pressure = v->shear_pressure == HG_SHEAR_PRESSURE_MAX ? HG_SHEAR_P_MAX : HG_SHEAR_P_MEAN;
+    e->shear_pressure = v->shear_pressure == HG_SHEAR_PRESSURE_MAX     ? HG_SHEAR_P_MAX
+                        : v->shear_pressure == HG_SHEAR_PRESSURE_HERTZ ? HG_SHEAR_P_HERTZ
+                                                                       : HG_SHEAR_P_MEAN;
+    e->relaxation = v->relaxation == HG_RELAXATION_TTPS ? HG_RELAX_TTS : HG_RELAX_CONSTANT;
+    if (v->friction_preset == HG_FRICTION_PRESET_PAPER) { /* the paper's choices together */
+        e->roelands_Z = HG_Z_SIMPLE;
+        e->shear_pressure = HG_SHEAR_P_MEAN;
+        e->relaxation = HG_RELAX_CONSTANT;
+        e->Lambda_cap = 0.0;
+    }
     e->thermal = v->friction_model == HG_FRICTION_MODEL_EHL_THERMAL;
     s->p.friction.lub = &s->lub;
 }

@@ -31,34 +31,71 @@ void hg_ehl_params_default(hg_ehl_params *p)
     p->hertz = HG_HERTZ_EXACT;
     p->roelands_Z = HG_Z_SIMPLE;
     p->shear_pressure = HG_SHEAR_P_MEAN;
+    p->relaxation = HG_RELAX_CONSTANT;
     p->thermal = 1;
 }
+
+/* Gauss-Legendre nodes and weights on [0, 1] (8 points, exact to degree 15): the mean of tau over
+ * the Hertzian ellipse, p = p_max s with s = sqrt(1 - rho^2), is int_0^1 tau(p_max s) 2 s ds. */
+#define N_HERTZ 8
+static const double GL_S[N_HERTZ] = {0.019855071751231912, 0.10166676129318664,
+                                     0.2372337950418355,   0.4082826787521751,
+                                     0.5917173212478248,   0.7627662049581645,
+                                     0.8983332387068134,   0.9801449282487681};
+static const double GL_W[N_HERTZ] = {0.05061426814518853, 0.11119051722668721,
+                                     0.15685332293894344, 0.18134189168918083,
+                                     0.18134189168918083, 0.15685332293894344,
+                                     0.11119051722668721, 0.05061426814518853};
 
 /* Everything tau(T) needs; T is the only variable during the T_c solve. */
 typedef struct {
     hg_rheology rh;     /* Vogel, alpha*(T), Roelands Z (and Z_exact's warm start) */
-    double ln1p_p;      /* ln(1 + p/p0), p = p_m or p_max */
-    double gdot_over_F; /* gamma_dot / F(gamma_dot) [1/s] */
-    double Lambda, p_cap; /* limiting shear tau <= Lambda p_cap (Lambda 0: off) */
-    double eta, Z;      /* of the last evaluation */
+    int n;              /* pressure nodes: 1 (p_m or p_max) or N_HERTZ (the Hertzian field) */
+    double ln1p_p[N_HERTZ]; /* ln(1 + p_i/p0) */
+    double tau_L[N_HERTZ];  /* limiting shear stress Lambda p_i [Pa] (0: none) */
+    double w[N_HERTZ];      /* weights of the mean over the ellipse (sum 1) */
+    double gamma_dot;   /* [1/s] */
+    double gdot_over_F; /* gamma_dot / F(gamma_dot) with the constant lambda [1/s] */
+    double lambda_per_eta; /* TTS: lambda = this eta(p, T) [s/(Pa s)]; 0: constant lambda */
+    double hn_alpha, hn_beta;
+    double eta, Z;      /* of the last evaluation (first node) */
 } shear_ctx;
 
-/* tau(T) = eta(p, T) gamma_dot / F(gamma_dot), capped (eqs. 7-9; Roelands + Vogel), and
- * dtau/dT = tau d ln eta/dT (0 where capped). */
+/* Viscous stress of one node, tau_v = eta gamma_dot / F, and d ln tau_v / d ln eta. With TTS,
+ * lambda = lambda_per_eta eta, so d ln F / d ln eta = alpha beta x/(1 + x), x = (lambda gdot)^alpha. */
+static double viscous_stress(const shear_ctx *s, double eta, double *dln_deta)
+{
+    double x, F;
+    if (!(s->lambda_per_eta > 0.0)) {
+        *dln_deta = 1.0;
+        return eta * s->gdot_over_F;
+    }
+    x = pow(s->lambda_per_eta * eta * s->gamma_dot, s->hn_alpha);
+    F = s->hn_beta == 1.0 ? 1.0 + x : pow(1.0 + x, s->hn_beta);
+    *dln_deta = 1.0 - s->hn_alpha * s->hn_beta * x / (1.0 + x);
+    return eta * s->gamma_dot / F;
+}
+
+/* tau(T): the mean over the pressure nodes of eta(p_i, T) gamma_dot / F, each limited smoothly
+ * by Lambda p_i (eqs. 7-9; Roelands + Vogel), and dtau/dT. */
 static double shear_of_T(double T, void *vctx, double *dtau_dT)
 {
     shear_ctx *s = vctx;
     hg_rheo_state r;
-    double ln_eta, dlneta, tau, capped;
+    double tau = 0.0, dtau = 0.0;
+    int i;
     hg_rheology_at(&s->rh, T, &r);
     hg_rheology_Z(&s->rh, T, &r);
-    ln_eta = hg_roelands_ln_eta(&r, s->ln1p_p, &dlneta);
-    s->eta = exp(ln_eta);
+    for (i = 0; i < s->n; i++) {
+        double dlneta, dln, slope, eta = exp(hg_roelands_ln_eta(&r, s->ln1p_p[i], &dlneta));
+        double tv = viscous_stress(s, eta, &dln), ti = hg_shear_limit(tv, s->tau_L[i], &slope);
+        if (i == 0) s->eta = eta;
+        tau += s->w[i] * ti;
+        dtau += s->w[i] * slope * tv * dln * dlneta;
+    }
     s->Z = r.Z;
-    tau = s->eta * s->gdot_over_F;
-    capped = hg_shear_cap(tau, s->Lambda, s->p_cap);
-    *dtau_dT = capped < tau ? 0.0 : tau * dlneta;
-    return capped;
+    *dtau_dT = dtau;
+    return tau;
 }
 
 static int finite_contact(const hg_pair_contact *c)
@@ -126,20 +163,46 @@ static void stage_asperities(ehl_eval *e)
     e->F_b = hg_boundary_friction(p->tau_0, p->varsigma_a, e->st.A_asp, e->st.W_asp);
 }
 
-/* shear rate and the pressure of the shear stress (eqs. 7-9) */
+/* relaxation time per unit viscosity for time-temperature-pressure superposition:
+ * lambda(p, T) = lambda_0 eta(p, T)/eta_0(T_ref), Table 2's lambda_0 measured at T_ref and
+ * ambient pressure */
+static double lambda_per_eta(shear_ctx *sc, const hg_lubricant *lub)
+{
+    hg_rheo_state ref;
+    hg_rheology_at(&sc->rh, HG_HN_T_REF, &ref);
+    return lub->hn_lambda / exp(ref.ln_eta0);
+}
+
+/* shear rate and the pressures of the shear stress (eqs. 7-9) */
 static void stage_shear(ehl_eval *e)
 {
     const hg_hertz *hz = &e->st.hertz;
+    const hg_lubricant *lub = e->lub;
     shear_ctx *sc = &e->sc;
-    double v_s = e->kin.v_s;
+    double v_s = e->kin.v_s, Lambda = e->p->Lambda_cap > 0.0 ? e->p->Lambda_cap : 0.0;
+    int i;
     e->st.gamma_dot = (v_s > HG_SPEED_FLOOR ? v_s : HG_SPEED_FLOOR) / e->h_c;
-    e->st.F_hn = hg_hn_factor(e->lub->hn_lambda, e->lub->hn_alpha, e->lub->hn_beta,
-                              e->st.gamma_dot);
+    e->st.F_hn = hg_hn_factor(lub->hn_lambda, lub->hn_alpha, lub->hn_beta, e->st.gamma_dot);
+    sc->gamma_dot = e->st.gamma_dot;
     sc->gdot_over_F = e->st.gamma_dot / e->st.F_hn;
-    sc->ln1p_p = log1p((e->p->shear_pressure == HG_SHEAR_P_MAX ? hz->p_max : hz->p_m) /
-                       HG_ROELANDS_P0);
-    sc->Lambda = e->p->Lambda_cap;
-    sc->p_cap = hz->p_m;
+    sc->hn_alpha = lub->hn_alpha;
+    sc->hn_beta = lub->hn_beta;
+    sc->lambda_per_eta = e->p->relaxation == HG_RELAX_TTS ? lambda_per_eta(sc, lub) : 0.0;
+    if (e->p->shear_pressure == HG_SHEAR_P_HERTZ) {
+        sc->n = N_HERTZ;
+        for (i = 0; i < N_HERTZ; i++) {
+            double p_i = hz->p_max * GL_S[i];
+            sc->ln1p_p[i] = log1p(p_i / HG_ROELANDS_P0);
+            sc->tau_L[i] = Lambda * p_i;
+            sc->w[i] = 2.0 * GL_W[i] * GL_S[i];
+        }
+    } else {
+        double p_s = e->p->shear_pressure == HG_SHEAR_P_MAX ? hz->p_max : hz->p_m;
+        sc->n = 1;
+        sc->ln1p_p[0] = log1p(p_s / HG_ROELANDS_P0);
+        sc->tau_L[0] = Lambda * p_s;
+        sc->w[0] = 1.0;
+    }
     sc->eta = sc->Z = 0.0;
 }
 
@@ -216,7 +279,7 @@ static void stage_diagnostics(ehl_eval *e)
     double dtau;
     /* the last evaluation need not be at T_c: refresh eta and Z */
     if (e->p->thermal) (void)shear_of_T(e->out->T_c, &e->sc, &dtau);
-    if (e->p->Lambda_cap > 0.0 && st->tau >= e->p->Lambda_cap * st->hertz.p_m)
+    if (e->p->Lambda_cap > 0.0 && st->tau >= 0.5 * e->p->Lambda_cap * st->hertz.p_m)
         st->flags |= HG_EHL_TAU_CAPPED;
     st->theta_e = hg_entrainment_angle(e->kin.U_e);
     st->dT_flash = hg_flash_rise(st->R_fp, st->a_h, e->out->F_f * e->kin.v_s);

@@ -14,7 +14,13 @@
 #include "tribo/pair_contact.h"
 
 typedef enum { HG_Z_SIMPLE = 0, HG_Z_EXACT = 1 } hg_roelands_z_mode;
-typedef enum { HG_SHEAR_P_MEAN = 0, HG_SHEAR_P_MAX = 1 } hg_shear_pressure;
+/* The pressure of the shear stress: one pressure (p_m, p_max), or the mean of the stress over the
+ * Hertzian pressure field (8-point Gauss quadrature over the ellipse). */
+typedef enum { HG_SHEAR_P_MEAN = 0, HG_SHEAR_P_MAX = 1, HG_SHEAR_P_HERTZ = 2 } hg_shear_pressure;
+/* The Havriliak-Negami relaxation time: constant (the paper), or following the viscosity
+ * (time-temperature-pressure superposition, lambda = lambda_0 eta(p, T)/eta_0(HG_HN_T_REF)). */
+typedef enum { HG_RELAX_CONSTANT = 0, HG_RELAX_TTS = 1 } hg_relaxation;
+#define HG_HN_T_REF 343.15 /* [K] where Table 2's lambda_0 was measured (70 degC, ambient p) */
 
 #define HG_EHL_LOAD_MIN 1.0 /* [N] below this the pair carries no friction (docs/physics.md §13.14) */
 #define HG_EHL_H_MIN 1e-9   /* [m] floor on h_c */
@@ -32,13 +38,15 @@ typedef struct {
     double eta_beta_sigma;  /* eta_s beta_s sigma_c [-] (0.0104, paper) */
     double sigma_over_beta; /* composite sigma_c/beta_s [-] (1e-3) */
     double T_inlet_rise;    /* T_in = T_bath + this [K] (20, paper eq. 15) */
-    double Lambda_cap;      /* limiting shear tau <= Lambda p_m; 0 = off (default) */
+    double Lambda_cap;      /* limiting shear coefficient Lambda: each pressure's stress limited
+                               smoothly to Lambda p (hg_shear_limit); 0 = off (default) */
     double k_f_override;    /* lubricant conductivity [W/(m K)]; <= 0: the lubricant's k_f */
     double T_c_max;         /* cap on T_c [K] (573.15) */
     double T_c_tol;         /* convergence of T_c [K] (1e-6) */
     int hertz;              /* hg_hertz_mode (HG_HERTZ_EXACT) */
     int roelands_Z;         /* hg_roelands_z_mode (HG_Z_SIMPLE) */
     int shear_pressure;     /* hg_shear_pressure (HG_SHEAR_P_MEAN) */
+    int relaxation;         /* hg_relaxation (HG_RELAX_CONSTANT) */
     int thermal;            /* 1: solve T_c (default); 0: isothermal, shear at T_in */
 } hg_ehl_params;
 
@@ -46,7 +54,7 @@ typedef struct {
 enum {
     HG_EHL_NO_CONTACT = 1,   /* W < HG_EHL_LOAD_MIN or invalid geometry: no friction */
     HG_EHL_H_FLOORED = 2,    /* h_c raised to HG_EHL_H_MIN */
-    HG_EHL_TAU_CAPPED = 4,   /* limiting shear active at T_c */
+    HG_EHL_TAU_CAPPED = 4,   /* limiting shear dominant at T_c: tau >= Lambda p_m / 2 */
     HG_EHL_TC_CAPPED = 8,    /* T_c at T_c_max */
     HG_EHL_TC_NOT_CONVERGED = 16,
     HG_EHL_HUGE_RISE = 32    /* isothermal first-guess rise > 1000 K (cold starts only) */

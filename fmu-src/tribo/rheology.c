@@ -200,8 +200,14 @@ double hg_hn_factor(double lambda, double alpha_hn, double beta_hn, double gamma
     return pow(1.0 + pow(x, alpha_hn), beta_hn);
 }
 
-double hg_shear_cap(double tau, double Lambda, double p)
+double hg_shear_limit(double tau_v, double tau_L, double *slope)
 {
-    if (Lambda > 0.0 && tau > Lambda * p) return Lambda * p;
-    return tau;
+    double x;
+    if (!(tau_L > 0.0)) {
+        *slope = 1.0;
+        return tau_v;
+    }
+    x = tau_v / tau_L;
+    *slope = exp(-x);
+    return -tau_L * expm1(-x);
 }

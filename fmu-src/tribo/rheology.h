@@ -95,7 +95,9 @@ double hg_roelands_Z_exact(double alpha_star, double A, double Z_guess, double *
  * the shear stress is tau = eta gamma_dot / F (eq. 7). */
 double hg_hn_factor(double lambda, double alpha_hn, double beta_hn, double gamma_dot);
 
-/* Optional limiting shear stress: min(tau, Lambda p) when Lambda > 0 (docs/physics.md §4.5). */
-double hg_shear_cap(double tau, double Lambda, double p);
+/* Limiting shear stress (Bair and Winer 1979, smooth): tau = tau_L (1 - exp(-tau_v/tau_L)) for
+ * tau_L > 0, else tau_v; *slope = dtau/dtau_v in (0, 1]. Equals tau_v for tau_v << tau_L and
+ * approaches tau_L from below. */
+double hg_shear_limit(double tau_v, double tau_L, double *slope);
 
 #endif

@@ -235,7 +235,15 @@ int main(void)
     /* HN factor and cap */
     CHECK_CLOSE(hg_hn_factor(7.9e-8, 0.70, 1.0, 3.858e6), 1.435, 0.001, 0);
     CHECK(hg_hn_factor(7.9e-8, 0.70, 1.0, 0.0) == 1.0 && hg_hn_factor(0.0, 0.7, 1.0, 1e6) == 1.0);
-    CHECK(hg_shear_cap(5e7, 0.08, 5e8) == 0.08 * 5e8 && hg_shear_cap(5e7, 0.0, 5e8) == 5e7);
+    /* smooth limiting shear (Bair-Winer): tau_L (1 - exp(-tau_v/tau_L)) */
+    {
+        double sl, t = hg_shear_limit(5e7, 0.08 * 5e8, &sl);
+        CHECK_CLOSE(t, 4e7 * (1.0 - exp(-1.25)), 1e-14, 0);
+        CHECK_CLOSE(sl, exp(-1.25), 1e-14, 0);
+        CHECK(hg_shear_limit(5e7, 0.0, &sl) == 5e7 && sl == 1.0);
+        CHECK_CLOSE(hg_shear_limit(1e3, 4e7, &sl), 1e3, 1e-4, 0); /* Newtonian far below */
+        CHECK(hg_shear_limit(1e12, 4e7, &sl) == 4e7 && sl == 0.0);
+    }
 
     /* --- thermal helpers and the T_c solver --- */
     CHECK_CLOSE(hg_coleman_length(5e-3, 2e-4, 3.0, 0.0), 2e-4, 1e-15, 0);
@@ -397,7 +405,7 @@ int main(void)
                worst);
         CHECK(worst < 1e-8);
     }
-    /* limiting shear cap */
+    /* limiting shear: the mean stress approaches Lambda p_m from below */
     {
         hg_ehl_params q = p;
         q.Lambda_cap = 0.005;
@@ -405,7 +413,56 @@ int main(void)
         c = contact(2380.0, 1.0, 40.0);
         hg_ehl_pair_ex(&q, &l63, &c, &warm, &o, &s);
         CHECK(s.flags & HG_EHL_TAU_CAPPED);
-        CHECK_CLOSE(s.tau, 0.005 * s.hertz.p_m, 1e-14, 0);
+        CHECK(s.tau < 0.005 * s.hertz.p_m && s.tau > 0.99 * 0.005 * s.hertz.p_m);
+        for (j = 0; j < 2; j++) { /* over the Hertzian field as well, thermal and isothermal */
+            q.shear_pressure = HG_SHEAR_P_HERTZ;
+            q.thermal = j;
+            q.Lambda_cap = 0.03;
+            hg_ehl_pair_ex(&q, &l63, &c, &warm, &o, &s);
+            CHECK(s.tau < 0.03 * s.hertz.p_m);
+        }
+    }
+    /* the shear stress averaged over the Hertzian field against a brute-force integral of the
+     * same local law over the ellipse (isothermal, so at T_in): int_0^1 tau(p_max s) 2 s ds with
+     * 20000 midpoints; with and without the limit, both relaxation laws */
+    for (j = 0; j < 4; j++) {
+        hg_ehl_params q = p;
+        const hg_lubricant *l = &lubs[j & 1];
+        double sum = 0.0, T_in = 40.0 + C0 + 20.0, lam0 = l->hn_lambda;
+        double eta_ref = eta0_of(l, HG_HN_T_REF);
+        long k, n = 20000;
+        q.shear_pressure = HG_SHEAR_P_HERTZ;
+        q.thermal = 0;
+        q.roelands_Z = HG_Z_EXACT;
+        q.Lambda_cap = j < 2 ? 0.0 : 0.07;
+        q.relaxation = j & 1 ? HG_RELAX_TTS : HG_RELAX_CONSTANT;
+        c = contact(2380.0, 1.0, 40.0);
+        hg_ehl_pair_ex(&q, l, &c, &warm, &o, &s);
+        for (k = 0; k < n; k++) {
+            double sk = (k + 0.5) / n, pk = s.hertz.p_max * sk, eta = eta_of(l, T_in, pk, 1);
+            double lam = q.relaxation == HG_RELAX_TTS ? lam0 * eta / eta_ref : lam0;
+            double tv = eta * s.gamma_dot / (1.0 + pow(lam * s.gamma_dot, l->hn_alpha));
+            double tL = q.Lambda_cap * pk;
+            sum += 2.0 * sk * (tL > 0.0 ? tL * (1.0 - exp(-tv / tL)) : tv) / n;
+        }
+        printf("Hertz mean shear stress, case %d: quadrature %.6g Pa, brute force %.6g Pa\n", j,
+               s.tau, sum);
+        CHECK_CLOSE(s.tau, sum, 2e-3, 0);
+        CHECK_CLOSE(o.F_v, (s.hertz.A - s.A_asp) * s.tau, 1e-12, 0);
+    }
+    /* time-temperature-pressure superposition at one pressure, by hand: lambda = lambda_0
+     * eta(p_m, T_in)/eta_0(70 degC), tau = eta gamma_dot/(1 + (lambda gamma_dot)^alpha) */
+    {
+        hg_ehl_params q = p;
+        double eta, lam, T_in = 60.0 + C0;
+        q.relaxation = HG_RELAX_TTS;
+        q.thermal = 0;
+        c = contact(2380.0, 1.0, 40.0);
+        hg_ehl_pair_ex(&q, &l62, &c, &warm, &o, &s);
+        eta = eta_of(&l62, T_in, s.hertz.p_m, 0);
+        lam = l62.hn_lambda * eta / eta0_of(&l62, HG_HN_T_REF);
+        CHECK_CLOSE(s.tau, eta * s.gamma_dot / (1.0 + pow(lam * s.gamma_dot, 0.70)), 1e-12, 0);
+        CHECK(lam > 100.0 * l62.hn_lambda); /* thinning dominates inside the contact */
     }
     /* zero load and tiny load: no friction, T_c = T_in, film fields 0 */
     {
@@ -448,13 +505,15 @@ int main(void)
                                   {1, 0, 1, 0},            {0.2, 1, -0.2, -1}, {1, 1, -0.3, 0.4}};
         long n = 0, bad = 0, capped = 0;
         int w, v, t, d, sw;
-        for (sw = 0; sw < 32; sw++) {
+        for (sw = 0; sw < 96; sw++) { /* every switch combination */
             hg_ehl_params q = p;
-            q.hertz = sw & 1 ? HG_HERTZ_APPROX : HG_HERTZ_EXACT;
-            q.roelands_Z = sw & 2 ? HG_Z_EXACT : HG_Z_SIMPLE;
-            q.shear_pressure = sw & 4 ? HG_SHEAR_P_MAX : HG_SHEAR_P_MEAN;
-            q.thermal = !(sw & 8);
-            q.Lambda_cap = sw & 16 ? 0.08 : 0.0;
+            int b = sw / 3;
+            q.shear_pressure = sw % 3; /* mean, max, hertz */
+            q.hertz = b & 1 ? HG_HERTZ_APPROX : HG_HERTZ_EXACT;
+            q.roelands_Z = b & 2 ? HG_Z_EXACT : HG_Z_SIMPLE;
+            q.relaxation = b & 4 ? HG_RELAX_TTS : HG_RELAX_CONSTANT;
+            q.thermal = !(b & 8);
+            q.Lambda_cap = b & 16 ? 0.08 : 0.0;
             for (j = 0; j < 2; j++)
                 for (w = 0; w < 8; w++)
                     for (v = 0; v < 7; v++)

@@ -163,12 +163,14 @@ int main(void)
     CHECK_CLOSE(s.hertz.b_c, 0.321e-3, TOL, 0);
     CHECK_CLOSE(s.hertz.p_m, 0.70e9, TOL, 0);
 
-    /* Lambda cap 0.08: no change */
+    /* limiting shear 0.08 at tau_v/tau_L ~ 0.17: the smooth Bair-Winer limit
+     * tau_L (1 - exp(-x)) = tau_v (1 - x/2 + ...) takes about x/2 of the viscous part, less the
+     * cooler film's rise in tau_v: mu falls by about 5 % and the limit is not dominant */
     c = pitch_point(2380.0);
     p.Lambda_cap = 0.08;
     warm = NAN;
     hg_ehl_pair_ex(&p, &l62, &c, &warm, &o, &s);
-    CHECK_CLOSE(o.mu, 0.0129, TOL, 0);
+    CHECK(o.mu < 0.0129 && o.mu > 0.93 * 0.0129);
     CHECK(!(s.flags & HG_EHL_TAU_CAPPED));
 
     /* crude efficiency: two pairs at ls = 0.5 lose 144 W of 20.9 kW */
