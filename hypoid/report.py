@@ -7,6 +7,7 @@ import numpy as np
 import pandas as pd
 
 from hypoid import findings as fd
+from hypoid import modes
 from hypoid import tables as tb
 
 
@@ -100,7 +101,7 @@ def _header(pts_all, cont_all, info, find, modal):
             "parameters f_2..f_4); resonance speed n = 60 f / N_p.", "",
             md_table(modal, {"ratio": 3, "f_2 [Hz]": 1, "f_3 [Hz]": 1, "f_4 [Hz]": 1,
                              "n(f_2) [rpm]": 0, "n(f_3) [rpm]": 0, "n(f_4) [rpm]": 0},
-                     index=False), ""]
+                     index=False), "", modes.findings_section(), ""]
 
 
 def _pivot_lines(t, columns=None):
