@@ -66,8 +66,11 @@ static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn
     double w_p = y[HG_Y_W_P];
     if (p->mesh == HG_MESH_MODEL_VARYING) {
         ev->flank = active_flank(p, mode, y[HG_Y_X]);
-        hg_gearset_mesh(p->gear, ev->flank, y[HG_Y_T_KM], p->gear->N_p * y[HG_Y_PHI_P],
-                        &ev->mesh);
+        if (p->phase) /* a single-series set, tabulated */
+            hg_phase_table_mesh(p->phase, p->gear->N_p * y[HG_Y_PHI_P], &ev->mesh);
+        else
+            hg_gearset_mesh(p->gear, ev->flank, y[HG_Y_T_KM], p->gear->N_p * y[HG_Y_PHI_P],
+                            &ev->mesh);
         ev->f = hg_backlash_f(&p->backlash, y[HG_Y_X], mode);
         ev->Phi = hg_backlash_potential(&p->backlash, y[HG_Y_X], mode);
     } else {
@@ -92,9 +95,12 @@ static void pair_friction(const hg_dyn_params *p, const double *y,
 {
     int k, with_contact = p->friction.model != HG_FRICTION_MODEL_NONE || all_pairs;
     double w_p = y[HG_Y_W_P], w_g = y[HG_Y_W_G], W = ev->W_drive + ev->W_coast;
+    double theta = p->gear->N_p * y[HG_Y_PHI_P];
     hg_pair_geometry geo;
-    hg_gearset_pairs(p->gear, ev->flank, y[HG_Y_T_KM], p->gear->N_p * y[HG_Y_PHI_P],
-                     with_contact, &geo);
+    if (p->phase && with_contact && !all_pairs) /* the right-hand side: the tables */
+        hg_phase_table_pairs(p->phase, theta, &geo);
+    else
+        hg_gearset_pairs(p->gear, ev->flank, y[HG_Y_T_KM], theta, with_contact, &geo);
     for (k = 0; k < HG_MAX_PAIRS; k++) {
         hg_pair_contact c;
         double vs_x, vs_y, norm, P_k;
@@ -108,7 +114,11 @@ static void pair_friction(const hg_dyn_params *p, const double *y,
         c.R_x = geo.R_x[k];
         c.R_y = geo.R_y[k];
         c.T_bath = ev->T_oil;
-        hg_friction_pair(&p->friction, &c, &T_c_warm[k], &ev->pair[k]);
+        if (p->table && !all_pairs)
+            ev->pair[k].F_f = hg_friction_table_F(p->table, hg_gearset_pair_phase(theta, k), c.W,
+                                                  w_p, w_g, ev->T_oil);
+        else
+            hg_friction_pair(&p->friction, &c, &T_c_warm[k], &ev->pair[k]);
         vs_x = c.u_p[0] - c.u_g[0];
         vs_y = c.u_p[1] - c.u_g[1];
         norm = ev->pair[k].F_f / sqrt(vs_x * vs_x + vs_y * vs_y + SLIDE_EPS * SLIDE_EPS);
@@ -216,12 +226,17 @@ static double torque_filter_rate(const hg_dyn_params *p, const double *y, const 
     return (fabs(ev->W_t) * ev->mesh.R_p - y[HG_Y_T_KM]) / tau;
 }
 
+double hg_dyn_oil_temperature(const hg_dyn_params *p, const hg_inputs *u, const double *y)
+{
+    return p->ledger.sump ? y[HG_Y_T_OIL] : u->T_bath;
+}
+
 void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const double *y,
                      int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
     double d1 = y[HG_Y_W_S] - y[HG_Y_W_P], d2 = y[HG_Y_W_G] - y[HG_Y_W_W];
     memset(ev, 0, sizeof *ev);
-    ev->T_oil = p->ledger.sump ? y[HG_Y_T_OIL] : u->T_bath;
+    ev->T_oil = hg_dyn_oil_temperature(p, u, y);
     mesh_state(p, mode, y, ev);
     if (p->speed_governor)
         ev->T_w = u->T_s * p->ratio + p->K_p * (y[HG_Y_W_W] - u->w_set / p->ratio) +

@@ -9,6 +9,8 @@
 #include "model/backlash.h"
 #include "model/effmap.h"
 #include "model/friction.h"
+#include "model/friction_table.h"
+#include "model/phase_table.h"
 #include "model/gearset.h"
 #include "model/ledger.h"
 
@@ -40,7 +42,10 @@ typedef struct {
     double k_m0, R_p0;           /* mean mesh stiffness [N/m] and radius [m] */
     double ratio;                /* N_g / N_p */
     const hg_gearset *gear;      /* series already scaled by k_m_scale and e_0_scale */
+    const hg_phase_table *phase; /* gear's series tabulated, for the right-hand side */
     hg_friction_config friction;
+    const hg_friction_table *table; /* tabulated F_f of the pairs for the right-hand side, or
+                                       NULL: hg_friction_pair at every evaluation */
     const hg_effmap *map;        /* friction_model = map: efficiency of the rigid gear */
     int speed_governor;          /* load_mode = speed */
     double K_p, K_i;             /* governor gains [N m s/rad], [N m/rad] */
@@ -78,6 +83,9 @@ typedef struct {
  * friction model needs them or `all_pairs` is set (for outputs). T_c_warm: per-pair warm start. */
 void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const double *y,
                      int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev);
+
+/* The oil temperature every loss sees [K]: the sump's state, or the input T_bath. */
+double hg_dyn_oil_temperature(const hg_dyn_params *p, const hg_inputs *u, const double *y);
 
 /* dy/dt from an evaluation at y. */
 void hg_dyn_derivatives(const hg_dyn_params *p, const hg_inputs *u, const double *y,

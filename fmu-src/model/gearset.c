@@ -271,22 +271,50 @@ void hg_gearset_means(const hg_gearset *g, int flank, double T, double *k_m0, do
     *R_p0 = b.lo->y[HG_S_R_P].mean + b.w * (b.hi->y[HG_S_R_P].mean - b.lo->y[HG_S_R_P].mean);
 }
 
+double hg_gearset_share_clamp(double ls_raw)
+{
+    /* clamp to [0, 1] continuously, dropping the truncation ripple in the no-contact gap */
+    double ls = ls_raw - LS_CONTACT_FLOOR;
+    return ls < 0.0 ? 0.0 : (ls > 1.0 ? 1.0 : ls);
+}
+
+void hg_gearset_normalise_shares(double ls[HG_MAX_PAIRS])
+{
+    double sum = 0.0;
+    int k;
+    for (k = 0; k < HG_MAX_PAIRS; k++) sum += ls[k];
+    for (k = 0; k < HG_MAX_PAIRS; k++) ls[k] = sum > 0.0 ? ls[k] / sum : 1.0 / 3.0;
+}
+
+double hg_gearset_pair_phase(double theta, int k) { return (theta + TWO_PI * k) / 3.0; }
+
+int hg_gearset_single_series(const hg_gearset *g) { return g->n_levels == 1 && g->n_flanks == 1; }
+
+void hg_gearset_pair_point(const hg_gearset *g, double psi, hg_pair_point *out)
+{
+    const hg_series *y = g->s[HG_FLANK_DRIVE][0].y;
+    hg_harmonics h;
+    hg_harmonics_eval(psi, HG_MAX_HARMONICS, &h);
+    out->ls = hg_gearset_share_clamp(hg_series_value(&y[HG_S_LS], &h));
+    out->R_x = hg_series_value(&y[HG_S_R_X], &h);
+    out->R_y = hg_series_value(&y[HG_S_R_Y], &h);
+    out->up[0] = hg_series_value(&y[HG_S_UP_X], &h);
+    out->up[1] = hg_series_value(&y[HG_S_UP_Y], &h);
+    out->ug[0] = hg_series_value(&y[HG_S_UG_X], &h);
+    out->ug[1] = hg_series_value(&y[HG_S_UG_Y], &h);
+}
+
 void hg_gearset_pairs(const hg_gearset *g, int flank, double T, double theta, int with_contact,
                       hg_pair_geometry *out)
 {
     int k, n;
-    double sum = 0.0;
     hg_level_blend b;
     blend_at(g, flank, T, &b);
     n = harmonics_needed(&b, HG_S_LS, with_contact ? HG_S_UG_Y : HG_S_LS);
     for (k = 0; k < HG_MAX_PAIRS; k++) {
         hg_harmonics h;
-        double ls;
-        hg_harmonics_eval((theta + TWO_PI * k) / 3.0, n, &h);
-        /* clamp to [0, 1] continuously, dropping the truncation ripple in the no-contact gap */
-        ls = blended(&b, HG_S_LS, &h) - LS_CONTACT_FLOOR;
-        out->ls[k] = ls < 0.0 ? 0.0 : (ls > 1.0 ? 1.0 : ls);
-        sum += out->ls[k];
+        hg_harmonics_eval(hg_gearset_pair_phase(theta, k), n, &h);
+        out->ls[k] = hg_gearset_share_clamp(blended(&b, HG_S_LS, &h));
         if (!with_contact) continue;
         out->R_x[k] = blended(&b, HG_S_R_X, &h);
         out->R_y[k] = blended(&b, HG_S_R_Y, &h);
@@ -295,5 +323,5 @@ void hg_gearset_pairs(const hg_gearset *g, int flank, double T, double theta, in
         out->ug[k][0] = blended(&b, HG_S_UG_X, &h);
         out->ug[k][1] = blended(&b, HG_S_UG_Y, &h);
     }
-    for (k = 0; k < HG_MAX_PAIRS; k++) out->ls[k] = sum > 0.0 ? out->ls[k] / sum : 1.0 / 3.0;
+    hg_gearset_normalise_shares(out->ls);
 }

@@ -68,4 +68,24 @@ typedef struct {
 void hg_gearset_pairs(const hg_gearset *g, int flank, double T, double theta, int with_contact,
                       hg_pair_geometry *out);
 
+/* Whether the set has one torque level and one flank's series (the built-in sets): then the
+ * series do not depend on flank and torque, and the model may tabulate them. */
+int hg_gearset_single_series(const hg_gearset *g);
+
+/* One pair of a single-series set at its own phase psi = (theta + 2 pi k) / 3 (period 2 pi): its
+ * load share clamped (not renormalised), radii and velocities per unit speed. */
+typedef struct {
+    double ls, R_x, R_y, up[2], ug[2];
+} hg_pair_point;
+
+void hg_gearset_pair_point(const hg_gearset *g, double psi, hg_pair_point *out);
+
+/* A load-share series value clamped to [0, 1] above the contact floor (docs/physics.md §10.7),
+ * and the three pairs' shares renormalised to sum 1. */
+double hg_gearset_share_clamp(double ls_raw);
+void hg_gearset_normalise_shares(double ls[HG_MAX_PAIRS]);
+
+/* The phase psi of pair k at mesh angle theta. */
+double hg_gearset_pair_phase(double theta, int k);
+
 #endif

@@ -86,6 +86,7 @@ static int load_gearset(hg_setup *s, const char *resource_dir, const hg_vars *v,
     if (hg_gearset_load(f.path, &s->gear, why, sizeof why))
         return load_failed(&f, why, err, errlen);
     hg_gearset_scale(&s->gear, v->k_m_scale, v->e_0_scale);
+    if (hg_gearset_single_series(&s->gear)) hg_phase_table_build(&s->phase, &s->gear);
     return 0;
 }
 
@@ -245,6 +246,7 @@ static void dynamics_params(hg_setup *s, const hg_vars *v)
                      &p->k_m0, &p->R_p0);
     p->ratio = (double)s->gear.N_g / s->gear.N_p;
     p->gear = &s->gear;
+    p->phase = hg_gearset_single_series(&s->gear) ? &s->phase : NULL;
     p->friction.model = v->friction_model;
     p->friction.mu_const = v->mu_const;
     p->speed_governor = v->load_mode == HG_LOAD_MODE_SPEED;
@@ -273,6 +275,7 @@ static void tolerances(hg_setup *s, const hg_vars *v)
     t[HG_Y_T_KM] = 1e-3;  /* N m */
     s->rtol = v->rtol;
     s->fixed_step = v->solver == HG_SOLVER_NEWMARK;
+    s->explicit_rk = v->solver == HG_SOLVER_ARKODE_ERK;
     s->max_step = v->max_step;
     s->f_max = v->f_4;
     s->steps_per_mesh = s->fixed_step ? v->steps_per_mesh_cycle : STEPS_PER_MESH;

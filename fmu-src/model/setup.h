@@ -14,6 +14,7 @@
 
 typedef struct {
     hg_gearset gear;
+    hg_phase_table phase; /* gear's series tabulated */
     hg_lubricant lub;
     hg_effmap map;        /* friction_model = map only */
     hg_dyn_params p;      /* points into gear, lub and map */
@@ -22,6 +23,7 @@ typedef struct {
     double max_step;      /* user's max_step, 0 = automatic */
     int steps_per_mesh;   /* per mesh cycle: the fixed step (newmark) or the automatic max_step */
     int fixed_step;       /* the solver takes fixed steps (newmark) */
+    int explicit_rk;      /* arkode_erk: stability-bounded steps, no automatic max_step */
     double f_max;         /* highest natural frequency of the linearised system [Hz] */
     double window_angle;  /* pinion angle of one averaging window [rad] */
 } hg_setup;

@@ -80,14 +80,16 @@ void hg_stepping_begin(hg_runtime *rt, const hg_setup *s, const hg_inputs *u,
 }
 
 /* Variable-step solvers: the user's max_step, or automatically 1/steps_per_mesh of a mesh period
- * for the compliant meshes (docs/physics.md §8.8; none for the rigid one). The fixed-step solver:
+ * for the compliant meshes with CVODE (docs/physics.md §8.8; none for the rigid one, nor for
+ * arkode_erk, whose steps its stability bounds). The fixed-step solver:
  * steps_per_mesh_cycle per mesh period, never longer than the user's max_step nor than
  * 1/STEPS_PER_MODE of the period of the highest natural mode, which a fixed step must resolve
  * whatever the speed. */
 double hg_stepping_step_limit(const hg_runtime *rt, const hg_setup *s)
 {
     double f_mesh = fabs(rt->y[HG_Y_W_P]) * s->gear.N_p / HG_TWO_PI, h;
-    if (!s->fixed_step && (s->max_step > 0.0 || s->p.mesh == HG_MESH_MODEL_RIGID))
+    if (!s->fixed_step &&
+        (s->max_step > 0.0 || s->p.mesh == HG_MESH_MODEL_RIGID || s->explicit_rk))
         return s->max_step;
     h = f_mesh > 0.0 ? 1.0 / (s->steps_per_mesh * f_mesh) : MAX_AUTO_STEP;
     h = fmin(h, MAX_AUTO_STEP);

@@ -24,6 +24,8 @@ typedef struct {
     int windows;                   /* averaging windows completed */
     double eta_cycle, P_loss_cycle, eta_axle_cycle;
     int map_warned;                /* the map level has said once that it left its grid */
+    hg_ft_key ft_key;              /* the friction table's operating point, when ft_valid */
+    int ft_valid;
 } hg_runtime;
 
 /* Static equilibrium at speed w_p0 at time t0 (docs/physics.md §8.6), inputs of v held. */

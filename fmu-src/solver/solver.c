@@ -23,7 +23,9 @@ hg_solver *hg_solver_new(int n, int n_roots, hg_rhs_fn f, hg_root_fn g, void *us
         hg_errorf(err, errlen, "out of memory creating the solver");
         return NULL;
     }
-    s->ops = opt->method == HG_METHOD_NEWMARK ? &hg_newmark_ops : &hg_cvode_ops;
+    s->ops = opt->method == HG_METHOD_NEWMARK ? &hg_newmark_ops
+             : opt->method == HG_METHOD_ERK   ? &hg_arkode_erk_ops
+                                              : &hg_cvode_ops;
     s->impl = s->ops->create(&pb, opt, err, errlen);
     if (!s->impl) {
         free(s);

@@ -11,7 +11,8 @@ typedef int (*hg_root_fn)(double t, const double *y, double *g, void *user);
 typedef enum {
     HG_METHOD_BDF,    /* CVODE variable-order BDF */
     HG_METHOD_ADAMS,  /* CVODE variable-order Adams-Moulton */
-    HG_METHOD_NEWMARK /* fixed-step Newmark-beta, beta = 1/4, gamma = 1/2 (the paper's scheme) */
+    HG_METHOD_NEWMARK, /* fixed-step Newmark-beta, beta = 1/4, gamma = 1/2 (the paper's scheme) */
+    HG_METHOD_ERK      /* ARKODE explicit embedded Runge-Kutta, ARK4(3)6L[2]SA */
 } hg_method;
 
 typedef struct {

@@ -26,5 +26,6 @@ typedef struct {
 
 extern const hg_solver_ops hg_cvode_ops;
 extern const hg_solver_ops hg_newmark_ops;
+extern const hg_solver_ops hg_arkode_erk_ops;
 
 #endif

@@ -29,6 +29,7 @@ typedef struct {
     fmi2GetIntegerTYPE *get_integer;
     fmi2SetRealTYPE *set_real;
     fmi2SetIntegerTYPE *set_integer;
+    fmi2SetBooleanTYPE *set_boolean;
     fmi2SetRealInputDerivativesTYPE *set_real_input_derivatives;
     fmi2DoStepTYPE *do_step;
     fmi2GetFMUstateTYPE *get_state;
@@ -81,8 +82,8 @@ void host_close(instance *in);
 
 int host_set_int(instance *in, const char *name, int value);
 int host_set_real(instance *in, const char *name, double value);
-/* Sets a Real, Integer or Enumeration variable from text: a number, or an enumeration item's
- * name ("cvode_adams"). */
+/* Sets a Real, Integer, Boolean or Enumeration variable from text: a number, true/false, or an
+ * enumeration item's name ("cvode_adams"). */
 int host_set(instance *in, const char *name, const char *text);
 
 #endif

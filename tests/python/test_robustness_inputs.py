@@ -531,6 +531,8 @@ def test_fixed_parameters_and_outputs_cannot_be_set(fmu, tmp_path, tally):
             value = "x"
         elif var["kind"] == "Real":
             value = float(var["start"]) if var["start"] is not None else 1.0
+        elif var["kind"] == "Boolean":
+            value = int(var["start"] == "true")
         else:
             value = int(float(var["start"])) if var["start"] is not None else 1
         if var["causality"] == "parameter":

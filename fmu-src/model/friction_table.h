@@ -1,0 +1,65 @@
+/* A table of a flank pair's friction force over its engagement, so that the right-hand side
+ * interpolates instead of solving the friction model (the thermal EHL solve) at every call.
+ *
+ * The three pairs follow the same path of contact a third of the load-share period apart, so one
+ * table serves all of them: F_f(psi, W) over the pair phase psi (period 2 pi, hg_gearset_pair_point)
+ * and the pair load W in [0, W_max], at reference pinion and gear speeds and bath temperature,
+ * with its first derivatives in those three for the operating point's drift around them. The
+ * entries come from hg_friction_pair itself, so the table wraps whichever friction model runs.
+ * What is tabulated is ln(mu) = ln(F_f / W), smooth along the path and in ln W (mu varies as a
+ * small power of the load, or exponentially with the pressure for the isothermal shear), and its
+ * derivatives; interpolation is Catmull-Rom cubic in psi (periodic) and in ln W over
+ * [W_max / 1000, W_max], mu held beyond. Its error against the direct solve is tested in
+ * tests/c/test_friction_table.c. */
+#ifndef HG_FRICTION_TABLE_H
+#define HG_FRICTION_TABLE_H
+
+#include "model/friction.h"
+#include "model/gearset.h"
+
+#define HG_FT_N_PSI 128 /* phases over the load-share period */
+#define HG_FT_N_L 16    /* loads: W_max 10^(-3 (1 - j / 15)), j = 0 ... 15 */
+
+/* What a table is built for; equal keys give bit-identical tables. */
+typedef struct {
+    double w_p, w_g; /* reference pinion and gear speeds [rad/s] */
+    double T_bath;   /* reference bath temperature [K] */
+    double W_max;    /* top of the load range [N] */
+} hg_ft_key;
+
+typedef struct {
+    hg_ft_key key;
+    int built;
+    int usable; /* every tabulated mu is a friction coefficient (<= HG_FT_MU_MAX) */
+    /* ln mu and its derivatives per rad/s of w_p and w_g and per K of T_bath */
+    double L[HG_FT_N_PSI][HG_FT_N_L], dL_wp[HG_FT_N_PSI][HG_FT_N_L];
+    double dL_wg[HG_FT_N_PSI][HG_FT_N_L], dL_T[HG_FT_N_PSI][HG_FT_N_L];
+} hg_friction_table;
+
+/* Relative drift of the pinion speed, drift of the bath temperature [K] and load fraction of
+ * W_max beyond which hg_ft_key_covers asks for a rebuild. The gear speed's own excursions from
+ * w_p N_p / N_g (the dynamic transmission error's rate, about 1 %) are left to the derivative. */
+#define HG_FT_SPEED_DRIFT 0.02
+#define HG_FT_T_DRIFT 1.0
+#define HG_FT_LOAD_FILL 0.7
+
+/* The key for an operating point: pinion speed w_p and the gear's kinematic speed w_p / ratio,
+ * bath temperature, loads up to twice W_t. */
+void hg_ft_key_for(double w_p, double ratio, double T_bath, double W_t, hg_ft_key *key);
+
+/* Whether the table built for key still serves the operating point (w_p, T_bath, W_t). */
+int hg_ft_key_covers(const hg_ft_key *key, double w_p, double T_bath, double W_t);
+
+/* Beyond this friction coefficient (parameters far outside physics, e.g. a vanishing k_f) the
+ * table is not used: the direct solve runs, and fails as it would without the table. */
+#define HG_FT_MU_MAX 10.0
+
+/* Fills the table from the friction model cfg on gear set g. */
+void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg,
+                             const hg_gearset *g, const hg_ft_key *key);
+
+/* F_f [N] of a pair at phase psi carrying W at speeds w_p, w_g and bath temperature T_bath. */
+double hg_friction_table_F(const hg_friction_table *t, double psi, double W, double w_p,
+                           double w_g, double T_bath);
+
+#endif
