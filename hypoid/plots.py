@@ -316,7 +316,39 @@ def quick_look(df, out, continuation=False):
     return [_save(fig, out, "sweep")]
 
 
-def all_figures(pts, cont, out):
+def axle_loss_map(lm, out, name="axle_loss_map"):
+    """Stacked bars of the axle's losses by part over speed, one panel per oil temperature and
+    input torque (the hypoid.lossmap table); None when the table is empty."""
+    from hypoid.lossmap import PARTS
+
+    if lm is None or lm.empty:
+        return None
+    temps, torques = sorted(lm["T_oil_C"].unique()), sorted(lm["T_s"].unique())
+    speeds = sorted(lm["speed_rpm"].unique())
+    fig, axes = plt.subplots(len(temps), len(torques), figsize=(3 * len(torques),
+                             3.2 * len(temps)), sharex=True, squeeze=False)
+    for i, T in enumerate(temps):
+        for j, tq in enumerate(torques):
+            ax = axes[i][j]
+            sel = lm[(lm["T_oil_C"] == T) & (lm["T_s"] == tq)].set_index("speed_rpm")
+            bottom = np.zeros(len(speeds))
+            for k, (label, col) in enumerate(PARTS):
+                y = sel[col].reindex(speeds).to_numpy()
+                ax.bar(range(len(speeds)), y, bottom=bottom, color=f"C{k}", label=label)
+                bottom += y
+            ax.set_title(f"{T:.0f} °C, T_s = {tq:.0f} N·m", fontsize=9)
+            ax.set_xticks(range(len(speeds)), [f"{n:.0f}" for n in speeds], fontsize=8)
+            if j == 0:
+                ax.set_ylabel("loss power [W]")
+            if i == len(temps) - 1:
+                ax.set_xlabel("pinion speed [rpm]")
+    axes[0][0].legend(fontsize=8)
+    fig.suptitle("Axle losses by part (gear set 1, OS265962, rigid mesh, oil at fixed T)")
+    fig.tight_layout()
+    return _save(fig, out, name)
+
+
+def all_figures(pts, cont, out, lossmap=None):
     """Every study figure the tables allow; returns {name: path}."""
     out = pathlib.Path(out)
     made = {
@@ -327,6 +359,7 @@ def all_figures(pts, cont, out):
         "fig9": fig9_jump(cont, pts, out) if not cont.empty else None,
         "fig10": fig10_mesh_cycle(pts, out),
         "fig11": fig11_gear_sets(pts, out),
+        "lossmap": axle_loss_map(lossmap, out),
     }
     for e0 in tb.calibration_probes(pts):
         made[f"fig8-e0x{e0:g}"] = fig8_torque(

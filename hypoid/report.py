@@ -7,6 +7,7 @@ import numpy as np
 import pandas as pd
 
 from hypoid import findings as fd
+from hypoid import lossmap as lmap
 from hypoid import modes
 from hypoid import tables as tb
 
@@ -192,14 +193,67 @@ def _engagement_section(pts, figs):
     return L
 
 
-def write(out, pts, cont, info, figs, find, modal):
-    """Writes report.md into `out` from the raw tables, the figures {key: path}, the findings
-    and the modal table (hypoid.study makes them); returns the path."""
+def _lossmap_comparison(lm):
+    loaded = lm[lm["T_s"] > 0]
+    lo_pub, hi_pub = lmap.PUBLISHED_ETA_RANGE
+    L = []
+    for T, g in loaded.groupby("T_oil_C"):
+        L.append(f"- {T:.0f} °C oil, loaded points: eta_axle {100 * g['eta_axle'].min():.2f}–"
+                 f"{100 * g['eta_axle'].max():.2f} %.")
+    spins = [(T, n, lmap.spin_torque_Nm(lm, T, n)) for T in sorted(lm["T_oil_C"].unique())
+             for n in sorted(lm["speed_rpm"].unique())]
+    spins = [f"{q:.2f} N·m at {n:.0f} rpm, {T:.0f} °C" for T, n, q in spins if np.isfinite(q)]
+    if spins:
+        L.append("- Spin loss (T_s = 0) as a drag torque at the pinion: " + "; ".join(spins)
+                 + ".")
+    L += [f"- Published: whole passenger-car and light-commercial axles at typically "
+          f"{100 * lo_pub:.0f}–{100 * hi_pub:.0f} % torque efficiency, lower cold and at part "
+          "load; the UK Transport Research Laboratory's dynamometer tests of Ford Transit axles "
+          f"(TRL report RR10) lost at least {100 * lmap.PUBLISHED_MIN_LOSS_WARM:.0f} % even "
+          "warm and at high power, up to 40 % cold at low power; Xu, Singh, Maddock, Kahraman "
+          "and Hurley (SAE) measured rear-axle mechanical and spin losses varying strongly with "
+          "oil temperature and bearing preload.",
+          f"- Reading: {_reading(loaded, hi_pub)} Measured breakdowns commonly give churning "
+          "a larger share than this map: the disc churning formula and the assumed preload and "
+          "f_0 are the values to calibrate first (docs/axle.md, 'How the figures compare')."]
+    return L
+
+
+def _reading(loaded, hi_pub):
+    """Where the loaded points fall against the published upper bound."""
+    above = loaded[loaded["eta_axle"] > hi_pub]
+    if above.empty:
+        return f"every loaded point is at or below the published {100 * hi_pub:.0f} %."
+    return (f"{len(above)} of {len(loaded)} loaded points lie above the published "
+            f"{100 * hi_pub:.0f} % (from T_s = {above['T_s'].min():g} N·m): there the model "
+            "loses less than the measured axles.")
+
+
+def _lossmap_section(lm, figs):
+    """The axle's loss map (hypoid.lossmap) against published axle efficiencies."""
+    if lm is None or lm.empty:
+        return []
+    L = ["## The axle's loss map (axle_losses = full)", "",
+         "Steady runs (speed governor, rigid mesh, ehl_thermal, gear set 1, OS265962) with the "
+         "oil held at each temperature: the parts of P_axle = P_loss (mesh) + P_churn + "
+         "P_bearings + P_seals and eta_axle = 1 − P_axle / P_in_axle, means over the last "
+         f"{lmap.MEAN_STEPS} steps of {lmap.T_END_S:g} s. At T_s = 0 no power enters and "
+         "eta_axle is ~0 by definition. Models and sources: docs/axle.md.", ""]
+    _image(L, figs, "lossmap", "The axle's losses by part over pinion speed, per oil temperature "
+           "and input torque.")
+    return L + [lmap.markdown(lm), "", "Compared with published axle figures:", "",
+                *_lossmap_comparison(lm), ""]
+
+
+def write(out, pts, cont, info, figs, find, modal, lossmap=None):
+    """Writes report.md into `out` from the raw tables, the figures {key: path}, the findings,
+    the modal table and the axle's loss map (hypoid.study makes them); returns the path."""
     ok_pts, ok_cont = tb.prepare(pts), tb.prepare(cont)
     L = _header(pts, cont, info, find, modal)
     L += _torque_section(ok_pts, figs)
     L += _jump_section(ok_cont, figs)
     L += _engagement_section(ok_pts, figs)
+    L += _lossmap_section(lossmap, figs)
     if info.get("extra"):
         L += ["## Sensitivity runs (efficiency [%], 100 N·m, gear set 1)", "",
               _extra_table(ok_pts, info["extra"]),

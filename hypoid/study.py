@@ -14,7 +14,7 @@ import pathlib
 import time
 from dataclasses import dataclass, field
 
-from hypoid import cliargs, parallel, steady, sweep
+from hypoid import cliargs, lossmap, parallel, steady, sweep
 from hypoid.instance import SPEED_KEY
 from hypoid.paths import user_path
 
@@ -40,12 +40,17 @@ class Spec:
     extra: list = field(default_factory=list)  # (label, base params, {name: values}) grids
     settings: steady.Settings = field(default_factory=steady.Settings)
     ramp_time: float = 0.1
+    # the axle's loss map (hypoid.lossmap): oil temperatures in degC x speeds x torques
+    loss_temps: list = field(default_factory=lambda: [40.0, 80.0])
+    loss_speeds: list = field(default_factory=lambda: [1000, 2000, 4000])
+    loss_torques: list = field(default_factory=lambda: [0, 50, 200])
 
 
 SPECS = {
     "ci": Spec(speeds=[1000, 1200, 2000, 3000], torques=[50, 300], set_speeds=[1000, 3000],
                sweep_torques=[50], sweep_speeds=[1100, 1150, 1200, 1250],
-               trace_points=[(50, 1000), (50, 1200)]),
+               trace_points=[(50, 1000), (50, 1200)], loss_speeds=[1000, 2000],
+               loss_torques=[0, 50]),
     "default": Spec(
         speeds=[800, 1000, 1100, 1150, 1200, 1250, 1300, 1400, 1600, 1800, 1900, 2000, 2100,
                 2200, 2500, 3000, 3500, 4000, 4500, 5000],
@@ -120,7 +125,8 @@ def unique(points):
 
 
 def run(name, out, fmu_path, scheduler=None, workers=2):
-    """Runs a study; returns (points, continuation, info)."""
+    """Runs a study; returns (points, continuation, info). The axle's loss map goes to
+    out/lossmap.csv (info["lossmap"])."""
     spec = SPECS[name]
     out = pathlib.Path(out)
     out.mkdir(parents=True, exist_ok=True)
@@ -134,15 +140,18 @@ def run(name, out, fmu_path, scheduler=None, workers=2):
               for p in sweep.complete([{"gear_set": s, "lubricant": 1, "T_s": t}
                                        for s in spec.sweep_sets
                                        for t in spec.sweep_torques], extra_cols)]
+    loss_plan = lossmap.Plan(spec.loss_temps, spec.loss_speeds, spec.loss_torques)
     t0 = time.time()
     with parallel.executor(scheduler, workers) as client:
         t1 = time.time()
-        # the sweeps are long single tasks: submitted first, they overlap with the points
-        cont, pts = sweep.execute([sweep.SweepsPlan(sweeps, out, fmu, spec.settings,
-                                                    spec.ramp_time),
-                                   sweep.PointsPlan(points, out, fmu, spec.settings, traced)],
-                                  fmu, client, desc=f"study {name}")
+        # the sweeps are long single tasks: submitted first, they overlap with the points;
+        # the loss map's short rigid-mesh runs come last and fill the gaps
+        cont, pts, lm = sweep.execute([sweep.SweepsPlan(sweeps, out, fmu, spec.settings,
+                                                        spec.ramp_time),
+                                       sweep.PointsPlan(points, out, fmu, spec.settings, traced),
+                                       loss_plan], fmu, client, desc=f"study {name}")
     wall = time.time() - t0
+    lm.to_csv(out / "lossmap.csv", index=False)
     info = {"study": name, "fmu": str(fmu_path), "fmu_sha256": fmu.sha,
             "scheduler": scheduler or f"local cluster, {workers} workers x 1 thread"
             if workers else "in-process", "cluster_start_s": t1 - t0, "wall_s": wall,
@@ -150,6 +159,8 @@ def run(name, out, fmu_path, scheduler=None, workers=2):
             "settings": spec.settings.as_dict(), "ramp_time_s": spec.ramp_time,
             "swapped_lubricant_file": swapped,
             "extra": [(label, base) for label, base, _ in spec.extra],
+            "lossmap": "lossmap.csv", "lossmap_points": len(lm),
+            "lossmap_cpu_s": float(lm["cpu_s"].sum()),
             "finished": time.strftime("%Y-%m-%d %H:%M:%S")}
     return pts, cont, info
 
@@ -158,13 +169,17 @@ def write_report(out, pts, cont, info):
     """Results -> figures, findings and modal tables -> report.md (each by its own module)."""
     from hypoid import findings, plots, report, tables
 
+    import pandas as pd
+
     ok_pts, ok_cont = tables.prepare(pts), tables.prepare(cont)
-    figs = plots.all_figures(ok_pts, ok_cont, out / "figures")
+    lm_path = out / info.get("lossmap", "lossmap.csv")
+    lm = pd.read_csv(lm_path) if lm_path.exists() else None
+    figs = plots.all_figures(ok_pts, ok_cont, out / "figures", lm)
     find = findings.all_findings(pts, cont, out / "traces")
     find.to_csv(out / "findings.csv", index=False)
     modal = tables.modal_table(ok_pts)
     modal.to_csv(out / "modal.csv", index=False)
-    return report.write(out, pts, cont, info, figs, find, modal)
+    return report.write(out, pts, cont, info, figs, find, modal, lm)
 
 
 def main(argv):

@@ -1,0 +1,55 @@
+"""The axle's loss map (hypoid.lossmap) and its section in the study's report: the parts add up
+to P_axle (the ledger's identity P_axle = P_loss + P_churn + P_bearings + P_seals) in the FMU's
+numbers and in the numbers the report prints, and eta_axle = 1 - P_axle / P_in_axle."""
+
+import re
+
+import numpy as np
+import pytest
+
+from hypoid import lossmap, parallel, report
+
+
+@pytest.fixture(scope="module")
+def lm(fmu_path):
+    return lossmap.run(parallel.FmuRef(fmu_path), [40.0, 80.0], [1000, 4000], [0, 200])
+
+
+def test_parts_add_up_to_P_axle_and_eta_axle(lm):
+    parts = lm[[n for _, n in lossmap.PARTS]].sum(axis=1)
+    assert np.allclose(parts, lm["P_axle"], rtol=1e-9, atol=1e-9)
+    loaded = lm[lm["T_s"] > 0]
+    assert np.allclose(loaded["eta_axle"], 1 - loaded["P_axle"] / loaded["P_in_axle"], atol=1e-6)
+    assert (lm[["P_churn", "P_bearings", "P_seals"]] > 0).all().all()
+
+
+def test_warm_oil_lowers_the_loaded_mesh_and_bearing_losses(lm):
+    """Viscosity falls ~4x from 40 to 80 degC: the mesh's and the bearings' viscous parts fall."""
+    at = lm.set_index(["T_oil_C", "speed_rpm", "T_s"])
+    for n in (1000, 4000):
+        assert at.loc[(80.0, n, 200), "P_loss"] < 0.8 * at.loc[(40.0, n, 200), "P_loss"]
+        assert at.loc[(80.0, n, 200), "P_bearings"] < at.loc[(40.0, n, 200), "P_bearings"]
+
+
+def test_report_section_prints_a_map_whose_numbers_obey_the_identity(lm):
+    text = "\n".join(report._lossmap_section(lm, {}))
+    assert text.startswith("## The axle's loss map")
+    assert "TRL report RR10" in text and "95–97 %" in text
+    rows = [line for line in text.splitlines() if re.match(r"\| (40|80) \|", line)]
+    assert len(rows) == len(lm)
+    for line in rows:
+        T, n, tq, mesh, churn, bear, seals, p_axle, eta = (
+            float(c) for c in line.strip("| ").split(" | "))
+        assert abs(mesh + churn + bear + seals - p_axle) <= 0.2 + 1e-9, line  # 0.05 W rounding
+        if tq > 0:
+            assert 90.0 < eta < 100.0, line
+
+
+def test_report_write_includes_the_section(tmp_path, lm, monkeypatch):
+    """report.write puts the loss-map section into report.md (the other sections stubbed)."""
+    for name in ("_header", "_torque_section", "_jump_section", "_engagement_section"):
+        monkeypatch.setattr(report, name, lambda *a, **k: [])
+    monkeypatch.setattr(report, "health", lambda *a, **k: "")
+    monkeypatch.setattr(report.tb, "prepare", lambda df: df)
+    path = report.write(tmp_path, None, None, {}, {}, None, None, lm)
+    assert "## The axle's loss map" in path.read_text()
