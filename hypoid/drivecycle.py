@@ -9,7 +9,8 @@ half-shaft compliance (k_t2 = k_hs); the vehicle FMU (build/LongitudinalVehicle.
 2) returns the road load and the brake torque at the wheel speed; a driver (a PI speed
 controller with feed-forward of the cycle's acceleration) sets the propeller-shaft torque T_s
 and the brakes. Both FMUs run in fmpy's co-simulation master (Jacobi, communication step
---step). Cycles: WLTC class 3b and NEDC from the European Commission JRC's `wltp` package
+--step) or, with --master libcosim, in libcosim's fixed-step algorithm (libcosimpy; the build's
+integer-coded gear FMU). Cycles: WLTC class 3b and NEDC from the European Commission JRC's `wltp` package
 (PyPI wltp 0.1.2a0, wltp/cycles/class3.py and nedc.py), or a CSV file with the columns
 `time` (s, increasing) and `speed` (km/h), optionally `phase` (a name per row).
 
@@ -34,7 +35,7 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 
 from hypoid import cliargs
-from hypoid.instance import Instance
+from hypoid.instance import TABLE, Instance
 from hypoid.paths import user_path
 
 KMH = 1 / 3.6
@@ -232,41 +233,114 @@ def gear_start(level, vehicle, I_w0, T_oil0, T_amb, extra):
     return values
 
 
+class FmpyMaster:
+    """The gear and the vehicle in fmpy (hypoid.instance), Jacobi: both step over [t, t + h]
+    with the inputs of t (T_w = the vehicle's T_hs, w_w = the gear's w_w, both of t)."""
+
+    def __init__(self, gear_fmu, vehicle_fmu, gear_values, vehicle_values, h):
+        self.gear, self.car = Instance(gear_fmu, name="gear"), Instance(vehicle_fmu,
+                                                                         name="vehicle")
+        self.gear.start(gear_values)
+        self.car.start(vehicle_values)
+        self.g_refs = [self.gear.ref(x) for x in GEAR_OUT]
+        self.v_refs = [self.car.ref(x) for x in VEHICLE_OUT]
+        self.g_in = [self.gear.ref(x) for x in ("T_s", "T_w", "v_air")]
+        self.v_in = [self.car.ref(x) for x in ("w_w", "T_brake")]
+        self.h, self.k = h, 0
+        self.outputs = self._read()
+
+    def _read(self):
+        return (self.gear._call(self.gear.slave.getReal, self.g_refs),
+                self.car._call(self.car.slave.getReal, self.v_refs))
+
+    def step(self, T_s, T_brake, v_air):
+        gv, vv = self.outputs
+        self.gear._call(self.gear.slave.setReal, self.g_in, [T_s, vv[I_THS], v_air])
+        self.car._call(self.car.slave.setReal, self.v_in, [gv[I_WW], T_brake])
+        t = self.k * self.h
+        self.gear.do_step(t, self.h)
+        self.car.do_step(t, self.h)
+        self.k += 1
+        self.outputs = self._read()
+        return self.outputs
+
+    def close(self):
+        self.gear.close()
+        self.car.close()
+
+
+class LibcosimMaster:
+    """The same scene in libcosim's fixed-step (Jacobi) algorithm with the integer-coded gear
+    FMU: T_hs -> T_w and w_w -> w_w are libcosim connections; T_s, v_air and T_brake go in
+    through its override manipulator before each step."""
+
+    def __init__(self, gear_fmu, vehicle_fmu, gear_values, vehicle_values, h):
+        from hypoid import libcosim
+        from hypoid.instance import TABLE
+
+        self.ex = libcosim.Execution(h)
+        self.ex.add("gear", libcosim.intenum_fmu(gear_fmu))
+        self.ex.add("vehicle", vehicle_fmu)
+        self.ex.initial("gear", {var.name: x for var, x in TABLE.fmu_values(gear_values)})
+        self.ex.initial("vehicle", vehicle_values)
+        self.ex.connect("vehicle", "T_hs", "gear", "T_w")
+        self.ex.connect("gear", "w_w", "vehicle", "w_w")
+        self.g_refs = [self.ex.ref("gear", x) for x in GEAR_OUT]
+        self.v_refs = [self.ex.ref("vehicle", x) for x in VEHICLE_OUT]
+
+    def step(self, T_s, T_brake, v_air):
+        self.ex.set_reals("gear", ["T_s", "v_air"], [T_s, v_air])
+        self.ex.set_reals("vehicle", ["T_brake"], [T_brake])
+        self.ex.step()
+        return self.ex.reals("gear", self.g_refs), self.ex.reals("vehicle", self.v_refs)
+
+    def close(self):
+        self.ex.close()
+
+
+MASTERS = {"fmpy": FmpyMaster, "libcosim": LibcosimMaster}
+I_WW, I_THS, I_V = GEAR_OUT.index("w_w"), VEHICLE_OUT.index("T_hs"), VEHICLE_OUT.index("v")
+
+
+def _driver(gear, vehicle):
+    """The driver for this gear (an Instance after initialisation: ratio and inertias)."""
+    ratio = float(gear.get("ratio"))
+    J = gear.reals(["I_w"])[0] + gear.get("I_g") + (gear.get("I_p") + gear.get("I_s")) \
+        * ratio ** 2
+    return Driver(vehicle, ratio, J)
+
+
 def simulate(cycle, gear_fmu, vehicle_fmu, level, T_oil0, T_amb, h, extra, label,
-             vehicle=None):
-    """One co-simulation over the cycle; the recorded outputs at every communication point."""
+             vehicle=None, master="fmpy", until=None):
+    """One co-simulation over the cycle (up to `until` s if given) in the named master; the
+    recorded outputs at every communication point. The state at t = 0 and the driver's data
+    come from fmpy's initialisation in both masters: libcosim initialises inside its first
+    step and cannot be read before it."""
     vehicle = vehicle or Vehicle()
     wall = time.perf_counter()
-    with Instance(gear_fmu, name="gear") as gear, Instance(vehicle_fmu, name="vehicle") as car:
-        I_w0 = gear.table.variable("I_w").start
-        gear.start(gear_start(level, vehicle, float(I_w0), T_oil0, T_amb, extra))
-        car.start(vehicle.fmu_values())
-        ratio = float(gear.get("ratio"))
-        J = gear.reals(["I_w"])[0] + gear.get("I_g") + (gear.get("I_p") + gear.get("I_s")) \
-            * ratio ** 2
-        driver = Driver(vehicle, ratio, J)
-        n = int(round((cycle.t[-1] - cycle.t[0]) / h))
-        names = ["time", "v_target", "T_s", "T_brake"] + GEAR_OUT + VEHICLE_OUT
-        rec = np.empty((n + 1, len(names)))
-        g_refs, v_refs = [gear.ref(x) for x in GEAR_OUT], [car.ref(x) for x in VEHICLE_OUT]
-        i_ww, i_ths, i_v = GEAR_OUT.index("w_w"), VEHICLE_OUT.index("T_hs"), VEHICLE_OUT.index("v")
-        t, T_s, T_b = cycle.t[0], 0.0, 0.0
-        gv = gear._call(gear.slave.getReal, g_refs)
-        vv = car._call(car.slave.getReal, v_refs)
+    I_w0 = float(TABLE.variable("I_w").start)
+    g_values = gear_start(level, vehicle, I_w0, T_oil0, T_amb, extra)
+    m = FmpyMaster(gear_fmu, vehicle_fmu, g_values, vehicle.fmu_values(), h)
+    driver, (gv, vv) = _driver(m.gear, vehicle), m.outputs
+    if master != "fmpy":
+        m.close()
+        m = MASTERS[master](gear_fmu, vehicle_fmu, g_values, vehicle.fmu_values(), h)
+    t_end = cycle.t[-1] if until is None else min(cycle.t[-1], cycle.t[0] + until)
+    n = int(round((t_end - cycle.t[0]) / h))
+    names = ["time", "v_target", "T_s", "T_brake"] + GEAR_OUT + VEHICLE_OUT
+    rec = np.empty((n + 1, len(names)))
+    t, T_s, T_b = cycle.t[0], 0.0, 0.0
+    try:
         for k in range(n + 1):
             v_now = cycle.speed(t)
             rec[k] = [t, v_now, T_s, T_b, *gv, *vv]
             if k == n:
                 break
-            T_s, T_b = driver.command(v_now, cycle.speed(t + h), vv[i_v], h)
-            gear._call(gear.slave.setReal, [gear.ref("T_s"), gear.ref("T_w"), gear.ref("v_air")],
-                       [T_s, vv[i_ths], vehicle.air_factor * abs(vv[i_v])])
-            car._call(car.slave.setReal, [car.ref("w_w"), car.ref("T_brake")], [gv[i_ww], T_b])
-            gear.do_step(t, h)
-            car.do_step(t, h)
+            T_s, T_b = driver.command(v_now, cycle.speed(t + h), vv[I_V], h)
+            gv, vv = m.step(T_s, T_b, vehicle.air_factor * abs(vv[I_V]))
             t = cycle.t[0] + (k + 1) * h
-            gv = gear._call(gear.slave.getReal, g_refs)
-            vv = car._call(car.slave.getReal, v_refs)
+    finally:
+        m.close()
     rows = {name: rec[:, j] for j, name in enumerate(names)}
     return Run(label, T_oil0, rows, time.perf_counter() - wall)
 
@@ -284,7 +358,8 @@ def summarise(run, cycle, h):
     losses = {part: float(r[name][-1]) for part, name in PARTS.items()}
     E_axle = sum(losses.values())
     phases = []
-    for name, a, b in cycle.phases:
+    t_end = float(r["time"][-1])
+    for name, a, b in [(n, a, min(b, t_end)) for n, a, b in cycle.phases if a < t_end]:
         d = {part: energy_at(r, n, b) - energy_at(r, n, a) for part, n in PARTS.items()}
         sel = (r["time"] >= a) & (r["time"] <= b)
         phases.append({"phase": name, "t_start_s": a, "t_end_s": b,
@@ -325,7 +400,8 @@ def difference(cold, warm):
 def markdown(meta, runs, diff):
     kj = 1e-3
     lines = [f"# hypoid drive-cycle: {meta['cycle']}", "", f"Cycle: {meta['source']}; "
-             f"level {meta['level']}; step {meta['step_s']} s; air {meta['T_amb_degC']:.0f} degC.",
+             f"level {meta['level']}; {meta['master']} master; step {meta['step_s']} s; "
+             f"air {meta['T_amb_degC']:.0f} degC.",
              "", "| | " + " | ".join(s["label"] for s in runs) + " |",
              "|---|" + "---|" * len(runs)]
 
@@ -417,6 +493,11 @@ def _parser():
     ap.add_argument("--warm", type=float, default=80.0,
                     help="oil at the start of the warm run in degC (80)")
     ap.add_argument("--no-warm", action="store_true", help="only the cold start")
+    ap.add_argument("--master", choices=sorted(MASTERS), default="fmpy",
+                    help="co-simulation master: fmpy (default) or libcosim (libcosimpy, with "
+                         "the build's integer-coded gear FMU)")
+    ap.add_argument("--until", type=float,
+                    help="stop after this many seconds of the cycle (default: the whole cycle)")
     ap.add_argument("--out", type=user_path, default=user_path("results"),
                     help="parent folder of the run's folder (default: ./results)")
     ap.add_argument("--name", help="the run's folder name (default: drive_cycle_<cycle>)")
@@ -427,6 +508,8 @@ def _parser():
 def check_args(args):
     if not 1e-3 <= args.step <= 1.0:
         raise cliargs.UsageError(f"--step {args.step}: between 0.001 and 1 s")
+    if args.until is not None and not args.until >= args.step:
+        raise cliargs.UsageError(f"--until {args.until}: at least one step ({args.step} s)")
     for name in ("t_amb", "t_oil0", "warm"):
         value = getattr(args, name)
         if value is not None and not -70.0 <= value <= 170.0:
@@ -445,11 +528,12 @@ def main(argv):
     if not args.no_warm:
         starts.append(("warm", args.warm + ZERO_C))
     runs = [simulate(cycle, gear_fmu, vehicle_fmu, args.level, T0, T_amb, args.step, extra,
-                     label) for label, T0 in starts]
+                     label, master=args.master, until=args.until) for label, T0 in starts]
     summaries = [summarise(run, cycle, args.step) for run in runs]
     diff = difference(summaries[0], summaries[1]) if len(summaries) == 2 else None
     meta = {"cycle": cycle.name, "source": cycle.source, "level": args.level,
             "gear_fmu_settings": LEVELS[args.level], "step_s": args.step,
+            "master": args.master, "until_s": args.until,
             "T_amb_degC": args.t_amb, "set": extra, "vehicle": asdict(Vehicle())}
     text = markdown(meta, summaries, diff)
     name = args.name or f"drive_cycle_{cycle.name}"

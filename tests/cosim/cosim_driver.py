@@ -30,6 +30,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from hypoid.libcosim import step_ns, why_unavailable as libcosim_available
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 GEAR_FMU = ROOT / "build" / "HypoidGearPair.fmu"
 # The build's variant for hosts without Enumeration support (libcosim 0.11 ignores Enumeration
@@ -76,14 +78,6 @@ class Scene:
         values = {"v0": r_dyn * self.w_p0 / RATIO, "T_hs0": 0.0, "w_w": self.w_p0 / RATIO}
         values.update(self.vehicle)
         return values
-
-
-def step_ns(h):
-    """libcosim counts time in integer nanoseconds."""
-    ns = int(round(h * 1e9))
-    if ns <= 0 or abs(ns - h * 1e9) > 1e-6:
-        raise ValueError(f"step {h} s is not a whole number of nanoseconds")
-    return ns
 
 
 def n_steps(scene, h):
@@ -159,16 +153,6 @@ def difference(a, b, names=("gear.w_p", "gear.T_w_out", "gear.eta"), h=None):
 
 
 # ------------------------------------------------------------------ libcosim
-
-
-def libcosim_available():
-    """None when libcosimpy loads here, else why not."""
-    try:
-        from libcosimpy._internal import libcosimc
-        libcosimc()
-    except Exception as e:  # noqa: BLE001 - any failure means: not usable here
-        return f"{type(e).__name__}: {e}"
-    return None
 
 
 def libcosim_variables(path):

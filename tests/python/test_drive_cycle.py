@@ -124,3 +124,41 @@ def test_vehicle_road_load_coupling_matches_its_formula():
     assert rows[-1, 1] == pytest.approx(v) and rows[-1, 6] == pytest.approx(v * 1.0, rel=1e-9)
     assert rows[-1, 2] == pytest.approx(rows[-1, 3] + rows[-1, 4], rel=1e-9)
     assert rows[-1, 5] == 0.0  # the vehicle's inertia is the driveline model's
+
+
+LIBCOSIM_TOL = 1e-3  # relative, axle energy loss: the masters differ only in rounding (~1e-5)
+
+
+def test_libcosim_and_fmpy_masters_agree_on_the_axle_loss(tmp_path, capsys):
+    """The first 30 s of WLTC class 3 (standing, launch, first peak) from a cold start:
+    `hypoid drive-cycle --master libcosim` against the same scene in fmpy's master; both are
+    Jacobi with the same inputs, so the axle's energy loss, each part and the oil agree."""
+    from hypoid import libcosim
+
+    why = libcosim.why_unavailable()
+    if why:
+        pytest.skip(f"libcosimpy not usable here: {why}")
+    code, _, err = run_cli(["--master", "libcosim", "--until", "30", "--no-warm", "--out",
+                            str(tmp_path), "--name", "lc"], capsys)
+    assert code == 0, err
+    lc = json.loads((tmp_path / "lc" / "summary.json").read_text())
+    assert lc["meta"]["master"] == "libcosim"
+    (got,) = lc["runs"]
+    cycle = drivecycle.builtin_cycle("wltc3")
+    run = drivecycle.simulate(cycle, drivecycle.ROOT / "build" / "HypoidGearPair.fmu",
+                              drivecycle.DEFAULT_VEHICLE_FMU, "fast", 293.15, 293.15, 0.05, {},
+                              "cold", until=30.0)
+    ref = drivecycle.summarise(run, cycle, 0.05)
+    assert run.rows["time"][-1] == pytest.approx(30.0)
+    assert ref["axle_loss_J"] > 1e3  # the launch is in the segment
+    assert got["axle_loss_J"] == pytest.approx(ref["axle_loss_J"], rel=LIBCOSIM_TOL)
+    for part, e in ref["axle_losses_J"].items():
+        assert got["axle_losses_J"][part] == pytest.approx(e, rel=LIBCOSIM_TOL, abs=1.0), part
+    assert got["energy_into_axle_J"] == pytest.approx(ref["energy_into_axle_J"],
+                                                      rel=LIBCOSIM_TOL)
+    assert got["T_oil_degC"]["end"] == pytest.approx(ref["T_oil_degC"]["end"], abs=1e-3)
+
+
+def test_until_shorter_than_a_step_is_refused(tmp_path, capsys):
+    code, _, err = run_cli(["--until", "0.01", "--out", str(tmp_path)], capsys)
+    assert code == 2 and "--until" in err
