@@ -8,11 +8,16 @@ import numpy as np
 MAGIC = "hypoid-gearset 1"
 MAX_HARMONICS = 32  # most harmonics a gear-set file may carry
 MESH_SERIES = ("k_m", "R_p", "e_0")  # argument ψ = θ (one mesh cycle)
-PAIR_SERIES = ("ls", "R_x", "R_y", "up_x", "up_y", "ug_x", "ug_y")  # ψ_k = (θ + 2π(k−1))/3
+# ψ_k = (θ + 2π(k−1))/3; up/ug are the material flank velocities, vc the contact point's (the
+# lubricant is entrained by up − vc and ug − vc); vc is optional (absent: a fixed contact point)
+# and written before up/ug, so that a file cut short never ends as a valid file without vc
+PAIR_SERIES = ("ls", "R_x", "R_y", "vc_x", "vc_y", "up_x", "up_y", "ug_x", "ug_y")
+OPTIONAL_SERIES = ("vc_x", "vc_y")
 CONTACT_SERIES = PAIR_SERIES[1:]  # undefined out of contact
 UNITS = {"k_m": "N/m", "R_p": "m", "e_0": "m", "ls": "1", "R_x": "m", "R_y": "m",
          "up_x": "m/(rad/s) of pinion speed", "up_y": "m/(rad/s) of pinion speed",
-         "ug_x": "m/(rad/s) of gear speed", "ug_y": "m/(rad/s) of gear speed"}
+         "ug_x": "m/(rad/s) of gear speed", "ug_y": "m/(rad/s) of gear speed",
+         "vc_x": "m/(rad/s) of pinion speed", "vc_y": "m/(rad/s) of pinion speed"}
 PARTS = ("mean", "sin", "cos")
 # Layered files (docs/data-files.md): e_0 once, these per flank and torque level under
 # '<flank>.<level>.<series>'; the levels are pinion torques [N·m], increasing.
@@ -78,7 +83,8 @@ def format_gearset(gs):
     lines += [MAGIC, f"name {name}", f"N_p {gs.N_p}", f"N_g {gs.N_g}"]
     if not gs.layered:
         for key in MESH_SERIES + PAIR_SERIES:
-            lines += _series_lines(key, key, gs.series[key], gs.notes)
+            if key in gs.series:  # the optional vc may be absent
+                lines += _series_lines(key, key, gs.series[key], gs.notes)
         return "\n".join(lines) + "\n"
     lines += ["torque_levels " + " ".join(_number(t) for t in gs.torque_levels),
               "flanks " + " ".join(gs.flanks)]
@@ -87,6 +93,8 @@ def format_gearset(gs):
         for level, torque in enumerate(gs.torque_levels, 1):
             lines += ["", f"# --- {flank} flank at {_number(torque)} N·m ---"]
             for key in FLANK_SERIES:
+                if key not in gs.layers[(flank, level)]:
+                    continue
                 full = f"{flank}.{level}.{key}"
                 lines += _series_lines(full, key, gs.layers[(flank, level)][key], gs.notes)
     return "\n".join(lines) + "\n"
@@ -115,8 +123,7 @@ def read_gearset(path):
     if "torque_levels" in entries or "flanks" in entries:
         gs = _layered(path, entries, name, N_p, N_g)
     else:
-        gs = Gearset(name, N_p, N_g, {key: _series(path, entries, key)
-                                      for key in MESH_SERIES + PAIR_SERIES})
+        gs = Gearset(name, N_p, N_g, _present(path, entries, "", MESH_SERIES + PAIR_SERIES))
     if entries:
         key, (line, _) = next(iter(entries.items()))
         raise GearsetFileError(f"{path}, line {line}: unknown key '{key}'")
@@ -144,10 +151,18 @@ def _layered(path, entries, name, N_p, N_g):
         raise GearsetFileError(f"{path}, line {f_line}: flanks '{text}' asks for a coast flank, "
                                "but the file has no coast series (no key 'coast.1.k_m.mean')")
     series = {"e_0": _series(path, entries, "e_0")}
-    layers = {(f, i): {key: _series(path, entries, f"{f}.{i}.{key}") for key in FLANK_SERIES}
+    layers = {(f, i): _present(path, entries, f"{f}.{i}.", FLANK_SERIES)
               for f in flanks for i in range(1, len(levels) + 1)}
     return Gearset(name, N_p, N_g, series, torque_levels=tuple(levels), flanks=flanks,
                    layers=layers)
+
+
+def _present(path, entries, prefix, keys):
+    """{key: Series} of `keys` under `prefix`; the optional series only when the file has them
+    (vc_x without vc_y, or the other way round, fails on the missing one)."""
+    given = any(f"{prefix}{k}.mean" in entries for k in OPTIONAL_SERIES)
+    return {key: _series(path, entries, prefix + key) for key in keys
+            if key not in OPTIONAL_SERIES or given}
 
 
 def _entries(path):

@@ -23,14 +23,14 @@ from hypoid.gearset_file import (MAX_HARMONICS, MAX_LEVELS, MESH_SERIES, PAIR_SE
                                  Gearset, write_gearset)
 from hypoid.tca_fit import (CONTACT_HARMONICS, HARMONICS, N_SAMPLES, fit, fit_error, fit_gearset,
                             fit_notes, grid)
-from hypoid.tca_table import (DATA_COLUMNS, TableError, import_table,  # noqa: F401 (re-exported)
+from hypoid.tca_table import (DATA_COLUMNS, POINT_COLUMNS, TableError, import_table,  # noqa: F401 (re-exported)
                               import_tables)
 
 
 # --- surrogate ---------------------------------------------------------------------------------
 
 def surrogate_samples(gs, angle):
-    """All ten series of the surrogate at `angle` (θ for the mesh series, ψ for the pair series)."""
+    """Every series of the surrogate at `angle` (θ for the mesh series, ψ for the pair series)."""
     samples = {"k_m": sur.k_m(gs, angle), "R_p": sur.R_p(gs, angle), "e_0": sur.e_0(angle),
                "ls": sur.pair_load_share(gs, angle)}
     samples.update(sur.pair_contact(gs, angle))
@@ -150,9 +150,11 @@ def export_csv(set_no, path, speed_rpm=2000.0, rows=360):
     r_px, r_gx = sur.x_radii(gs, s)
     r_y = np.full_like(s, 2e3 * gs.R_y)  # [mm]
     (up_x, up_y), (ug_x, ug_y) = sur.surface_velocities(gs, s)
+    vc_x, vc_y = (v * omega_p for v in sur.contact_point_velocity(gs))
     contact = {"r_px_mm": r_px * 1e3, "r_py_mm": r_y, "r_gx_mm": r_gx * 1e3, "r_gy_mm": r_y,
-               "up_x_m_s": up_x * omega_p, "up_y_m_s": up_y * omega_p,
-               "ug_x_m_s": ug_x * omega_g, "ug_y_m_s": ug_y * omega_g}
+               "up_x_m_s": up_x * omega_p - vc_x, "up_y_m_s": up_y * omega_p - vc_y,
+               "ug_x_m_s": ug_x * omega_g - vc_x, "ug_y_m_s": ug_y * omega_g - vc_y,
+               "vc_x_m_s": np.full_like(s, vc_x), "vc_y_m_s": np.full_like(s, vc_y)}
     columns = {"phi_p_deg": np.degrees(phi), "k_m_N_per_m": sur.k_m(gs, theta),
                "R_p_mm": sur.R_p(gs, theta) * 1e3, "e_0_um": sur.e_0(theta) * 1e6,
                "ls": sur.pair_load_share(gs, psi)}
@@ -165,7 +167,7 @@ def export_csv(set_no, path, speed_rpm=2000.0, rows=360):
         for key, value in (("name", f"Gear set {set_no} surrogate (exported table)"), ("N_p", N_p),
                            ("N_g", N_g), ("speed_rpm", f"{speed_rpm:g}")):
             out.writerow([key, value])
-        header = ["phi_p_deg"] + DATA_COLUMNS
+        header = ["phi_p_deg"] + DATA_COLUMNS + list(POINT_COLUMNS)
         out.writerow(header)
         for row in np.array([columns[name] for name in header]).T:
             out.writerow(["" if math.isnan(v) else f"{v:.10g}" for v in row])
@@ -195,7 +197,7 @@ def _parser():
     for q in (s, i):
         q.add_argument("--harmonics", type=int, default=HARMONICS, help="for k_m, R_p, e_0, ls")
         q.add_argument("--contact-harmonics", type=int, default=CONTACT_HARMONICS,
-                       help="for R_x, R_y, up_x, up_y, ug_x, ug_y")
+                       help="for R_x, R_y, up_x, up_y, ug_x, ug_y, vc_x, vc_y")
     e = sub.add_parser("export-csv", help="the surrogate of a gear set as a TCA table")
     e.add_argument("--set", type=int, choices=sorted(sur.TABLE_1), required=True)
     e.add_argument("--out", required=True)
@@ -235,7 +237,8 @@ def _run(args):
             print(f"  {len(gearset.flanks)} flank(s) x {len(gearset.torque_levels)} torque levels")
             continue
         for key in MESH_SERIES + PAIR_SERIES:
-            print(f"  {key:5} [{UNITS[key]}] {gearset.notes[key]}")
+            if key in gearset.notes:
+                print(f"  {key:5} [{UNITS[key]}] {gearset.notes[key]}")
 
 
 def main(argv):

@@ -305,6 +305,15 @@ def surface_velocities(gs, s):
     return tuple(out)
 
 
+def contact_point_velocity(gs):
+    """Velocity of the contact point in the ellipse frame per unit ω_p [m/(rad/s)]: its lengthwise
+    travel y = (ξ − ½) TRAVEL b_2 (as in R_p) at dξ/dφ_p = N_p/(2π ε_TCA), turned into the frame
+    like the surface velocities. Along the profile the contact moves with the line of action,
+    normal to the flanks, so the frame carries no profile component of it."""
+    lng = TRAVEL * gs.blank.b_2 * gs.blank.N_p / (2.0 * math.pi * gs.eps_TCA)
+    return math.sin(gs.beta_B) * lng, math.cos(gs.beta_B) * lng
+
+
 def pair_roll(gs, psi):
     """Roll distance s [m] of pair 1 at ψ (clamped to the path) and the mask 0 ≤ ξ ≤ 1."""
     xi = pair_xi(gs, psi)
@@ -312,9 +321,12 @@ def pair_roll(gs, psi):
 
 
 def pair_contact(gs, psi):
-    """Contact series of pair 1 at ψ: {R_x, R_y, up_x, up_y, ug_x, ug_y}, NaN out of contact."""
+    """Contact series of pair 1 at ψ: {R_x, R_y, up_x, up_y, ug_x, ug_y, vc_x, vc_y} (material
+    flank velocities and the contact point's), NaN out of contact."""
     s, inside = pair_roll(gs, psi)
     (up_x, up_y), (ug_x, ug_y) = surface_velocities(gs, s)
+    vc_x, vc_y = contact_point_velocity(gs)
     values = {"R_x": reduced(*x_radii(gs, s)), "R_y": np.full_like(s, gs.R_y), "up_x": up_x,
-              "up_y": up_y, "ug_x": ug_x, "ug_y": ug_y}
+              "up_y": up_y, "ug_x": ug_x, "ug_y": ug_y, "vc_x": np.full_like(s, vc_x),
+              "vc_y": np.full_like(s, vc_y)}
     return {key: np.where(inside, v, np.nan) for key, v in values.items()}

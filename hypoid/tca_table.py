@@ -27,6 +27,12 @@ RADIUS_COLUMNS = {"R_x": ("r_px_mm", "r_gx_mm"), "R_y": ("r_py_mm", "r_gy_mm")}
 VELOCITY_COLUMNS = {"up_x": "up_x_m_s", "up_y": "up_y_m_s", "ug_x": "ug_x_m_s", "ug_y": "ug_y_m_s"}
 CONTACT_COLUMNS = ["r_px_mm", "r_py_mm", "r_gx_mm", "r_gy_mm"] + list(VELOCITY_COLUMNS.values())
 DATA_COLUMNS = list(MESH_COLUMNS) + ["ls"] + CONTACT_COLUMNS
+# optional: the contact point's velocity, and the material flank velocities (docs/tca-import.md)
+POINT_COLUMNS = ("vc_x_m_s", "vc_y_m_s")
+MATERIAL_COLUMNS = {"up_x": "upm_x_m_s", "up_y": "upm_y_m_s", "ug_x": "ugm_x_m_s",
+                    "ug_y": "ugm_y_m_s"}
+OPTIONAL_COLUMNS = POINT_COLUMNS + tuple(MATERIAL_COLUMNS.values())
+VELOCITY_TOL = (1e-3, 1e-6)  # velocity sets agree within this share of the largest speed + m/s
 META_KEYS = ("name", "N_p", "N_g", "speed_rpm", "torque_Nm", "flank")
 FLANK_NAMES = ("drive", "coast")
 
@@ -112,7 +118,7 @@ def _read_meta(path, rows):
 
 
 def _check_header(path, line, header):
-    expected = set(DATA_COLUMNS)
+    expected = set(DATA_COLUMNS) | set(OPTIONAL_COLUMNS)
     missing = [c for c in DATA_COLUMNS if c not in header]
     unknown = [c for c in header[1:] if c not in expected]
     duplicate = sorted({c for c in header if header.count(c) > 1})
@@ -120,7 +126,13 @@ def _check_header(path, line, header):
                            (duplicate, "duplicate column(s)")):
         if names:
             _fail(path, line, None, None, f"{problem} {', '.join(names)}; the columns are "
-                  f"{' or '.join(ANGLE_COLUMNS)}, {', '.join(DATA_COLUMNS)}")
+                  f"{' or '.join(ANGLE_COLUMNS)}, {', '.join(DATA_COLUMNS)} and optionally "
+                  f"{', '.join(OPTIONAL_COLUMNS)}")
+    for group in (POINT_COLUMNS, tuple(MATERIAL_COLUMNS.values())):
+        given = [c for c in group if c in header]
+        if given and len(given) != len(group):
+            _fail(path, line, None, None, f"column(s) {', '.join(c for c in group if c not in given)}"
+                  f" missing: {', '.join(group)} go together")
 
 
 def _fit_row(path, line, row, n):
@@ -257,11 +269,12 @@ def _load_share(table, lines, cols):
 
 def _contact(table, lines, cols, omega_p, omega_g):
     """Reduced radii [m] and velocities per unit speed of the contact rows (NaN elsewhere)."""
-    given = np.stack([~np.isnan(cols[c]) for c in CONTACT_COLUMNS])
+    names = CONTACT_COLUMNS + [c for c in OPTIONAL_COLUMNS if c in cols]
+    given = np.stack([~np.isnan(cols[c]) for c in names])
     partial = np.flatnonzero(given.any(axis=0) & ~given.all(axis=0))
     if len(partial):
         r = partial[0]
-        _fail(table, lines[r], CONTACT_COLUMNS[int(np.argmin(given[:, r]))], "",
+        _fail(table, lines[r], names[int(np.argmin(given[:, r]))], "",
               "blank while other contact columns of the row are given")
     inside = given[0]
     loaded = np.flatnonzero(~inside & (np.nan_to_num(cols["ls"]) > LS_TOL))
@@ -278,9 +291,42 @@ def _contact(table, lines, cols, omega_p, omega_g):
         _fail(table, lines[i], "r_px_mm", cols["r_px_mm"][i],
               f"reduced radii R_x = {R_x:.4g} mm > R_y = {R_y:.4g} mm: x must be the minor axis "
               "of the contact ellipse (the larger curvature)")
-    for key, name in VELOCITY_COLUMNS.items():
-        values[key] = cols[name] / (omega_p if key.startswith("up") else omega_g)
+    v_c = _contact_point(table, lines, cols)
+    for key, name in VELOCITY_COLUMNS.items():  # material = relative to the contact + v_c
+        values[key] = (cols[name] + v_c[key[-1]]) / (omega_p if key.startswith("up") else omega_g)
+    if any(c in cols for c in OPTIONAL_COLUMNS):
+        values["vc_x"], values["vc_y"] = v_c["x"] / omega_p, v_c["y"] / omega_p
     return values
+
+
+def _contact_point(table, lines, cols):
+    """The contact point's velocity {x, y} [m/s] from the table's velocity sets, which must agree:
+    material minus relative is the same for pinion and gear, and equal to vc when it is given.
+    Neither set given: a contact point fixed in space (0)."""
+    sets = []
+    if all(c in cols for c in POINT_COLUMNS):
+        sets.append(("vc", {a: cols[f"vc_{a}_m_s"] for a in "xy"}))
+    if all(c in cols for c in MATERIAL_COLUMNS.values()):
+        for member in ("up", "ug"):
+            sets.append((member, {a: cols[MATERIAL_COLUMNS[f"{member}_{a}"]]
+                                  - cols[VELOCITY_COLUMNS[f"{member}_{a}"]] for a in "xy"}))
+    if not sets:
+        return {"x": 0.0, "y": 0.0}
+    speeds = np.concatenate([np.abs(cols[c]) for c in VELOCITY_COLUMNS.values()])
+    tol = VELOCITY_TOL[0] * np.nanmax(speeds, initial=0.0) + VELOCITY_TOL[1]
+    ref_name, ref = sets[0]
+    for name, other in sets[1:]:
+        for a in "xy":
+            bad = np.flatnonzero(np.abs(np.nan_to_num(other[a] - ref[a])) > tol)
+            if len(bad):
+                i = bad[0]
+                column = MATERIAL_COLUMNS[f"{name}_{a}"]
+                _fail(table, lines[i], column, float(cols[column][i]),
+                      f"the velocity sets contradict each other: the contact point moves at "
+                      f"{ref[a][i]:.6g} m/s along {a} by {ref_name} but {other[a][i]:.6g} m/s by "
+                      f"{name} (material minus relative velocity must be the contact point's "
+                      f"velocity for both members; tolerance {tol:.3g} m/s)")
+    return ref
 
 
 def _check_arc(table, lines, inside):
@@ -328,6 +374,8 @@ def table_samples(checked):
         _check_pitch(checked, key, three)
         checks[key] = (3.0 * checked.psi, checked.values[key])
     for key in PAIR_SERIES:
+        if key not in checked.values:  # the optional contact point velocity
+            continue
         samples[key] = resample(checked.psi, checked.values[key], n)
         checks[key] = (checked.psi, checked.values[key])
     _check_load_sum(checked, samples["ls"])
@@ -454,7 +502,7 @@ def import_tables(paths, speed_rpm=None, harmonics=HARMONICS, contact_harmonics=
         samples, checks = table_samples(checked)
         series = fit_gearset(samples, harmonics, contact_harmonics)
         level = levels.index(torque) + 1
-        layers[(flank, level)] = {k: series[k] for k in FLANK_SERIES}
+        layers[(flank, level)] = {k: series[k] for k in FLANK_SERIES if k in series}
         for key, note in fit_notes(series, checks, "the table rows").items():
             notes[f"{flank}.{level}.{key}"] = note
         if (flank, level) == ("drive", 1):

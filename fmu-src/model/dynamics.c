@@ -87,7 +87,9 @@ static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn
     flank_loads(p, mode, y[HG_Y_X], ev);
 }
 
-/* Friction torques from the sliding direction (docs/physics.md §9.1): T_fp w_p + T_fg w_g = -P_loss.
+/* Friction torques from the sliding direction (docs/physics.md §9.1): T_fp w_p + T_fg w_g = -P_loss,
+ * moment arms from the material flank velocities (r x F), entrainment from the surfaces'
+ * velocities relative to the moving contact point; the sliding velocity is the same either way.
  * Pairs carry the flank loads, so nothing while the teeth are apart; on the coast flank its own
  * contact data apply (the drive flank's when the file has no coast flank). */
 static void pair_friction(const hg_dyn_params *p, const double *y,
@@ -107,10 +109,7 @@ static void pair_friction(const hg_dyn_params *p, const double *y,
         ev->W_pair[k] = geo.ls[k] * W;
         if (!with_contact) continue;
         c.W = ev->W_pair[k];
-        c.u_p[0] = w_p * geo.up[k][0];
-        c.u_p[1] = w_p * geo.up[k][1];
-        c.u_g[0] = w_g * geo.ug[k][0];
-        c.u_g[1] = w_g * geo.ug[k][1];
+        hg_gearset_entrainment(geo.up[k], geo.ug[k], geo.vc[k], w_p, w_g, c.u_p, c.u_g);
         c.R_x = geo.R_x[k];
         c.R_y = geo.R_y[k];
         c.T_bath = ev->T_oil;

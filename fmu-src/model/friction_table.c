@@ -37,10 +37,7 @@ static double ln_mu(const hg_friction_config *cfg, const hg_pair_point *pt, doub
     hg_pair_contact c;
     hg_pair_friction f;
     c.W = W;
-    c.u_p[0] = w_p * pt->up[0];
-    c.u_p[1] = w_p * pt->up[1];
-    c.u_g[0] = w_g * pt->ug[0];
-    c.u_g[1] = w_g * pt->ug[1];
+    hg_gearset_entrainment(pt->up, pt->ug, pt->vc, w_p, w_g, c.u_p, c.u_g);
     c.R_x = pt->R_x;
     c.R_y = pt->R_y;
     c.T_bath = T_bath;

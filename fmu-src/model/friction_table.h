@@ -18,7 +18,8 @@
 #include "model/gearset.h"
 
 #define HG_FT_N_PSI 128 /* phases over the load-share period */
-#define HG_FT_N_L 16    /* loads: W_max 10^(-3 (1 - j / 15)), j = 0 ... 15 */
+#define HG_FT_N_L 20    /* loads: W_max 10^(-3 (1 - j / 19)), j = 0 ... 19 (16 left 1.7e-3 of mu
+                           at the design point with the moving contact of docs/physics.md §10.4) */
 
 /* What a table is built for; equal keys give bit-identical tables. */
 typedef struct {

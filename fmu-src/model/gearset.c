@@ -13,8 +13,9 @@
 #define CHECK_POINTS 720      /* samples over three mesh cycles for the sanity checks */
 
 static const char *const FLANK_NAMES[HG_N_FLANKS] = {"drive", "coast"};
-static const char *const SERIES_NAMES[HG_N_SERIES] = {"k_m",  "R_p",  "ls",   "R_x", "R_y",
-                                                         "up_x", "up_y", "ug_x", "ug_y"};
+static const char *const SERIES_NAMES[HG_N_SERIES] = {"k_m",  "R_p",  "ls",   "R_x",
+                                                         "R_y",  "up_x", "up_y", "ug_x",
+                                                         "ug_y", "vc_x", "vc_y"};
 
 static int read_series(const hg_datafile *f, const char *prefix, const char *name, hg_series *y,
                        char *err, size_t errlen)
@@ -98,6 +99,18 @@ static int read_flanks(const char *path, const hg_datafile *f, hg_gearset *g, ch
     return 0;
 }
 
+/* The contact point's velocity vc_x, vc_y is optional: a file without it (one before it, or a
+ * contact point fixed in space) leaves the zeroed series. */
+static int optional_series(const hg_datafile *f, const char *prefix, int i)
+{
+    char key[96];
+    if (i != HG_S_VC_X && i != HG_S_VC_Y) return 0;
+    snprintf(key, sizeof key, "%svc_x.mean", prefix);
+    if (hg_datafile_count(f, key) >= 0) return 0;
+    snprintf(key, sizeof key, "%svc_y.mean", prefix);
+    return hg_datafile_count(f, key) < 0;
+}
+
 /* The series of every flank and level: keys '<flank>.<level>.<series>.*' when the file has
  * torque_levels or flanks, else the plain '<series>.*' of the one-series layout. */
 static int read_blocks(const hg_datafile *f, int layered, hg_gearset *g, char *err, size_t errlen)
@@ -108,7 +121,8 @@ static int read_blocks(const hg_datafile *f, int layered, hg_gearset *g, char *e
             char prefix[32] = "";
             if (layered) snprintf(prefix, sizeof prefix, "%s.%d.", FLANK_NAMES[fl], lv + 1);
             for (i = 0; i < HG_N_SERIES; i++)
-                if (read_series(f, prefix, SERIES_NAMES[i], &g->s[fl][lv].y[i], err, errlen))
+                if (!optional_series(f, prefix, i) &&
+                    read_series(f, prefix, SERIES_NAMES[i], &g->s[fl][lv].y[i], err, errlen))
                     return -1;
         }
     return 0;
@@ -290,6 +304,16 @@ double hg_gearset_pair_phase(double theta, int k) { return (theta + TWO_PI * k) 
 
 int hg_gearset_single_series(const hg_gearset *g) { return g->n_levels == 1 && g->n_flanks == 1; }
 
+void hg_gearset_entrainment(const double up[2], const double ug[2], const double vc[2],
+                            double w_p, double w_g, double u_p[2], double u_g[2])
+{
+    int i;
+    for (i = 0; i < 2; i++) {
+        u_p[i] = w_p * (up[i] - vc[i]);
+        u_g[i] = w_g * ug[i] - w_p * vc[i];
+    }
+}
+
 void hg_gearset_pair_point(const hg_gearset *g, double psi, hg_pair_point *out)
 {
     const hg_series *y = g->s[HG_FLANK_DRIVE][0].y;
@@ -302,6 +326,8 @@ void hg_gearset_pair_point(const hg_gearset *g, double psi, hg_pair_point *out)
     out->up[1] = hg_series_value(&y[HG_S_UP_Y], &h);
     out->ug[0] = hg_series_value(&y[HG_S_UG_X], &h);
     out->ug[1] = hg_series_value(&y[HG_S_UG_Y], &h);
+    out->vc[0] = hg_series_value(&y[HG_S_VC_X], &h);
+    out->vc[1] = hg_series_value(&y[HG_S_VC_Y], &h);
 }
 
 void hg_gearset_pairs(const hg_gearset *g, int flank, double T, double theta, int with_contact,
@@ -310,7 +336,7 @@ void hg_gearset_pairs(const hg_gearset *g, int flank, double T, double theta, in
     int k, n;
     hg_level_blend b;
     blend_at(g, flank, T, &b);
-    n = harmonics_needed(&b, HG_S_LS, with_contact ? HG_S_UG_Y : HG_S_LS);
+    n = harmonics_needed(&b, HG_S_LS, with_contact ? HG_S_VC_Y : HG_S_LS);
     for (k = 0; k < HG_MAX_PAIRS; k++) {
         hg_harmonics h;
         hg_harmonics_eval(hg_gearset_pair_phase(theta, k), n, &h);
@@ -322,6 +348,8 @@ void hg_gearset_pairs(const hg_gearset *g, int flank, double T, double theta, in
         out->up[k][1] = blended(&b, HG_S_UP_Y, &h);
         out->ug[k][0] = blended(&b, HG_S_UG_X, &h);
         out->ug[k][1] = blended(&b, HG_S_UG_Y, &h);
+        out->vc[k][0] = blended(&b, HG_S_VC_X, &h);
+        out->vc[k][1] = blended(&b, HG_S_VC_Y, &h);
     }
     hg_gearset_normalise_shares(out->ls);
 }

@@ -13,11 +13,13 @@ enum { HG_FLANK_DRIVE, HG_FLANK_COAST, HG_N_FLANKS };
 
 /* The series of one flank at one torque level: k_m [N/m] and R_p [m] over one mesh cycle
  * (psi = theta); per pair over three mesh cycles (pair k at psi_k = (theta + 2 pi (k - 1)) / 3)
- * the load share ls [1], the reduced radii R_x, R_y [m], the pinion surface velocity up_x, up_y
- * per unit pinion speed and the gear's ug_x, ug_y per unit gear speed [m]. */
+ * the load share ls [1], the reduced radii R_x, R_y [m], the pinion's material flank velocity
+ * up_x, up_y per unit pinion speed, the gear's ug_x, ug_y per unit gear speed and the contact
+ * point's velocity vc_x, vc_y per unit pinion speed [m] (optional in a file: 0, a contact point
+ * fixed in space). */
 enum {
     HG_S_K_M, HG_S_R_P, HG_S_LS, HG_S_R_X, HG_S_R_Y, HG_S_UP_X, HG_S_UP_Y, HG_S_UG_X, HG_S_UG_Y,
-    HG_N_SERIES
+    HG_S_VC_X, HG_S_VC_Y, HG_N_SERIES
 };
 typedef struct {
     hg_series y[HG_N_SERIES];
@@ -59,8 +61,9 @@ void hg_gearset_mesh(const hg_gearset *g, int flank, double T, double theta, hg_
 typedef struct {
     double ls[HG_MAX_PAIRS];     /* load shares, clamped and renormalised to sum 1 */
     double R_x[HG_MAX_PAIRS], R_y[HG_MAX_PAIRS];
-    double up[HG_MAX_PAIRS][2];  /* per unit pinion speed [m] */
-    double ug[HG_MAX_PAIRS][2];  /* per unit gear speed [m] */
+    double up[HG_MAX_PAIRS][2];  /* material flank velocity per unit pinion speed [m] */
+    double ug[HG_MAX_PAIRS][2];  /* material flank velocity per unit gear speed [m] */
+    double vc[HG_MAX_PAIRS][2];  /* contact point velocity per unit pinion speed [m] */
 } hg_pair_geometry;
 
 /* Load shares always; radii and velocities only when with_contact is non-zero; `flank` and T as
@@ -75,7 +78,7 @@ int hg_gearset_single_series(const hg_gearset *g);
 /* One pair of a single-series set at its own phase psi = (theta + 2 pi k) / 3 (period 2 pi): its
  * load share clamped (not renormalised), radii and velocities per unit speed. */
 typedef struct {
-    double ls, R_x, R_y, up[2], ug[2];
+    double ls, R_x, R_y, up[2], ug[2], vc[2];
 } hg_pair_point;
 
 void hg_gearset_pair_point(const hg_gearset *g, double psi, hg_pair_point *out);
@@ -87,5 +90,11 @@ void hg_gearset_normalise_shares(double ls[HG_MAX_PAIRS]);
 
 /* The phase psi of pair k at mesh angle theta. */
 double hg_gearset_pair_phase(double theta, int k);
+
+/* The surface velocities relative to the moving contact point that entrain the lubricant
+ * (docs/physics.md §1) [m/s]: u_p = w_p (up - vc), u_g = w_g ug - w_p vc, from the material flank
+ * velocities up, ug and the contact point's vc per unit speed; w_p, w_g [rad/s]. */
+void hg_gearset_entrainment(const double up[2], const double ug[2], const double vc[2],
+                            double w_p, double w_g, double u_p[2], double u_g[2]);
 
 #endif

@@ -17,7 +17,7 @@ void hg_phase_table_build(hg_phase_table *t, const hg_gearset *g)
     const hg_series *mesh[HG_PT_N_MESH_CH] = {&y[HG_S_K_M], &y[HG_S_R_P], &g->e_0};
     const hg_series *pair[HG_PT_N_PAIR_CH] = {&y[HG_S_LS],   &y[HG_S_R_X],   &y[HG_S_R_Y],
                                               &y[HG_S_UP_X], &y[HG_S_UP_Y], &y[HG_S_UG_X],
-                                              &y[HG_S_UG_Y]};
+                                              &y[HG_S_UG_Y], &y[HG_S_VC_X], &y[HG_S_VC_Y]};
     int i, c;
     for (i = 0; i < HG_PT_N_MESH; i++) {
         hg_harmonics h;
@@ -95,6 +95,8 @@ void hg_phase_table_pairs(const hg_phase_table *t, double theta, hg_pair_geometr
         out->up[k][1] = value(&c, CH(HG_PT_UP_Y));
         out->ug[k][0] = value(&c, CH(HG_PT_UG_X));
         out->ug[k][1] = value(&c, CH(HG_PT_UG_Y));
+        out->vc[k][0] = value(&c, CH(HG_PT_VC_X));
+        out->vc[k][1] = value(&c, CH(HG_PT_VC_Y));
 #undef CH
     }
     hg_gearset_normalise_shares(out->ls);

@@ -15,7 +15,7 @@
 
 enum { HG_PT_K_M, HG_PT_R_P, HG_PT_E_0, HG_PT_N_MESH_CH };
 enum { HG_PT_LS, HG_PT_R_X, HG_PT_R_Y, HG_PT_UP_X, HG_PT_UP_Y, HG_PT_UG_X, HG_PT_UG_Y,
-       HG_PT_N_PAIR_CH };
+       HG_PT_VC_X, HG_PT_VC_Y, HG_PT_N_PAIR_CH };
 
 typedef struct {
     double mesh[HG_PT_N_MESH][HG_PT_N_MESH_CH][2]; /* value and d/dtheta at each node */

@@ -27,8 +27,7 @@ static double direct(const hg_friction_config *cfg, const hg_gearset *g, double 
     double warm = NAN;
     hg_gearset_pair_point(g, psi, &pt);
     c.W = W;
-    c.u_p[0] = w_p * pt.up[0], c.u_p[1] = w_p * pt.up[1];
-    c.u_g[0] = w_g * pt.ug[0], c.u_g[1] = w_g * pt.ug[1];
+    hg_gearset_entrainment(pt.up, pt.ug, pt.vc, w_p, w_g, c.u_p, c.u_g);
     c.R_x = pt.R_x, c.R_y = pt.R_y, c.T_bath = T;
     hg_friction_pair(cfg, &c, &warm, &f);
     return f.F_f;

@@ -22,6 +22,10 @@ static void builtin_set1(void)
     CHECK_CLOSE(g.s[0][0].y[HG_S_R_P].mean, 21.009e-3, 1e-4, 0.0);
     CHECK_CLOSE(g.s[0][0].y[HG_S_LS].mean, 1.0 / 3.0, 1e-9, 0.0);
     CHECK_CLOSE(g.e_0.s[0], 1.5e-6, 1e-9, 0.0);
+    /* the contact point travels lengthwise at 2.58 m/s at 2000 rpm (docs/physics.md §10.4) */
+    CHECK_CLOSE(hypot(g.s[0][0].y[HG_S_VC_X].mean, g.s[0][0].y[HG_S_VC_Y].mean) * 2000.0 * TWO_PI /
+                    60.0,
+                2.58, 0.0, 0.005);
     for (j = 0; j < 997; j++) { /* off any fitting grid */
         double theta = 3.0 * TWO_PI * j / 997.0, sum = 0.0, in_contact = 0;
         hg_pair_geometry p;
@@ -189,6 +193,8 @@ int main(void)
     expect_error("ls.mean", "ls.mean 0.5\n", "load shares of the three pairs sum to");
     expect_error("R_x.mean", "R_x.mean -0.01\n", "R_x evaluates to");
     expect_error("ug_y.mean", "# gone\n", "missing key 'ug_y.mean'");
+    /* the contact point velocity is optional, but only as a pair (absent: a fixed contact) */
+    expect_error(NULL, "vc_x.mean 0.003\nvc_x.sin\nvc_x.cos\n", "missing key 'vc_y.mean'");
     CHECK(hg_gearset_load("/tmp/does-not-exist.txt", &g, err, sizeof err) != 0);
     CHECK(strstr(err, "cannot open") != NULL);
     CHECK_DONE();

@@ -60,6 +60,7 @@ static void compare(const char *path)
             worst_pair = fmax(worst_pair, fabs(p.R_x[k] - q.R_x[k]) / amplitude(&y[HG_S_R_X]));
             worst_pair = fmax(worst_pair, fabs(p.up[k][0] - q.up[k][0]) / amplitude(&y[HG_S_UP_X]));
             worst_pair = fmax(worst_pair, fabs(p.ug[k][1] - q.ug[k][1]) / amplitude(&y[HG_S_UG_Y]));
+            worst_pair = fmax(worst_pair, fabs(p.vc[k][1] - q.vc[k][1]) / fabs(y[HG_S_VC_Y].mean));
         }
         CHECK_CLOSE(sum, 1.0, 1e-12, 0.0);
     }

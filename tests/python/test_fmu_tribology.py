@@ -1,6 +1,8 @@
 """The lubricated contact inside the running FMU: orders of magnitude of docs/physics.md §12, the power
 identity of the friction torques, the lubricant ranking, and pairs out of mesh."""
 
+import pathlib
+
 import numpy as np
 import pytest
 from hypoid.instance import simulate
@@ -26,20 +28,37 @@ def loaded(r, q):
     return np.concatenate([r[f"pair[{k}].{q}"][late & (r[f"pair[{k}].W"] > 500)] for k in (1, 2, 3)])
 
 
+@pytest.fixture(scope="module")
+def fixed_contact(fmu_path, tmp_path_factory):
+    """Gear set 1 with its contact point fixed in space (no vc series): the kinematics of the
+    worked point of docs/physics.md §2-§7, whose entrainment ignores the contact's travel."""
+    path = tmp_path_factory.mktemp("fixed") / "gearset1_fixed_contact.txt"
+    lines = (pathlib.Path(__file__).parents[2] / "resources/gearsets/gearset1.txt").read_text()
+    path.write_text("".join(ln for ln in lines.splitlines(True) if not ln.startswith("vc_")))
+    return run(fmu_path, gear_set_file=str(path))
+
+
 def test_default_point_orders_of_magnitude(default):
     """docs/physics.md §12: h_c of a few hundred nm, mu 0.01-0.03, T_c - T_in of 15-45 K (at the worked
-    point; the running mesh spans more of the path), efficiency about 99 %."""
+    point; the running mesh spans more of the path), efficiency about 99 %. The entrainment
+    relative to the moving contact point (§10.4, u_e about 1.7 m/s) leaves a film near the
+    roughness (lambda about 1.2)."""
     h_c, mu, rise = loaded(default, "h_c"), loaded(default, "mu"), loaded(default, "T_c") - 333.15
     assert 300e-9 < np.median(h_c) < 1000e-9
     assert 0.008 < np.median(mu) < 0.03
     assert 8.0 < np.median(rise) < 45.0
-    assert 1.2 < np.median(loaded(default, "lambda")) < 2.5  # viscous-dominated, some asperities
+    assert 0.9 < np.median(loaded(default, "lambda")) < 2.5  # viscous-dominated, some asperities
     assert np.median(loaded(default, "p_h")) == pytest.approx(0.8e9, rel=0.3)
-    # regime parameters near the worked point's load (docs/physics.md §7: g_V 1.0e9, g_E 2.1e7 at 2380 N)
-    near = np.abs(loaded(default, "W") - 2380.0) < 150.0
-    assert np.median(loaded(default, "g_V")[near]) == pytest.approx(1.0e9, rel=0.2)
-    assert np.median(loaded(default, "g_E")[near]) == pytest.approx(2.1e7, rel=0.2)
     assert 0.985 < default["eta_cycle"][-1] < 0.996
+
+
+def test_worked_point_regime_parameters(fixed_contact):
+    """Regime parameters near the worked point's load with its kinematics (contact point fixed,
+    u_e = 3.81 m/s): docs/physics.md §7, g_V 1.0e9, g_E 2.1e7 at 2380 N."""
+    near = np.abs(loaded(fixed_contact, "W") - 2380.0) < 150.0
+    assert np.median(loaded(fixed_contact, "g_V")[near]) == pytest.approx(1.0e9, rel=0.2)
+    assert np.median(loaded(fixed_contact, "g_E")[near]) == pytest.approx(2.1e7, rel=0.2)
+    assert 1.2 < np.median(loaded(fixed_contact, "lambda")) < 2.5
 
 
 def test_friction_torques_satisfy_the_power_identity(default):
@@ -74,7 +93,9 @@ def test_printed_conductivity_raises_the_second_oils_friction(fmu_path):
 def test_hot_oil_thins_the_film_and_raises_boundary_friction(fmu_path, default):
     hot = run(fmu_path, T_bath=413.15)
     assert np.median(loaded(hot, "h_c")) < 0.5 * np.median(loaded(default, "h_c"))
-    assert np.median(loaded(hot, "F_b")) > 10 * np.median(loaded(default, "F_b"))
+    # 8x at 140 degC (10x and more before the entrainment followed the moving contact, whose
+    # thinner film already gives the default point some asperity load)
+    assert np.median(loaded(hot, "F_b")) > 5 * np.median(loaded(default, "F_b"))
 
 
 def test_isothermal_friction_is_higher_than_thermal(fmu_path, default):
