@@ -32,8 +32,3 @@ double hg_housing_heat_h(const hg_housing *h, double h_conv, double T_oil, doubl
     double T2 = T_oil * T_oil, Ta2 = T_amb * T_amb;
     return h->A * (h_conv * (T_oil - T_amb) + h->eps * SIGMA_SB * (T2 * T2 - Ta2 * Ta2));
 }
-
-double hg_housing_heat(const hg_housing *h, double T_oil, double T_amb, double v_air)
-{
-    return hg_housing_heat_h(h, hg_housing_h_conv(h, T_oil - T_amb, v_air), T_oil, T_amb);
-}

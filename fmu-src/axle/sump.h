@@ -38,7 +38,4 @@ double hg_housing_h_conv(const hg_housing *h, double dT, double v_air);
  * one temperature). */
 double hg_housing_heat_h(const hg_housing *h, double h_conv, double T_oil, double T_amb);
 
-/* The same with the correlations' coefficient at air speed v_air [m/s] (0: natural convection). */
-double hg_housing_heat(const hg_housing *h, double T_oil, double T_amb, double v_air);
-
 #endif
