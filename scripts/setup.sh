@@ -3,7 +3,8 @@
 #   apt: a C compiler, cmake, SUNDIALS (static archives), python3 with venv; for the win64
 #        binary mingw-w64 and wine64 (scripts/win64.sh);
 #   .venv: the hypoid package with its pinned dependencies;
-#   build/third_party/: the Debian source packages of musl and SUNDIALS (scripts/third_party.sh).
+#   build/third_party/: the Debian source packages of musl and SUNDIALS (scripts/third_party.sh),
+#        and SUNDIALS built from it with optimisation for linux64 (scripts/sundials.sh).
 # Idempotent: each part is skipped when already present.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -28,13 +29,16 @@ fi
 # Third-party sources from Debian (cached in build/third_party/): musl's portable math for the
 # FMU binaries, SUNDIALS for the win64 one; then the win64 DLL (skipped with a message where the
 # cross toolchain cannot be installed; docs/portability.md).
-musl=""
+musl="" sundials="" sundials_dir=""
 while IFS='=' read -r key value; do
-  [ "$key" = musl ] && musl=$value
+  case $key in musl) musl=$value ;; sundials) sundials=$value ;; esac
 done < <(scripts/third_party.sh)
+# SUNDIALS for linux64 built with optimisation from the same source (else Debian's archives)
+[ -z "$sundials" ] ||
+  sundials_dir=$(scripts/sundials.sh "$sundials" "$PWD/build/third_party/sundials-linux64" | tail -1)
 win64_dll=$(scripts/win64.sh build | tail -1)
 cmake -S . -B build -DHG_PYTHON="$PWD/.venv/bin/python" -DHG_MUSL_DIR="$musl" \
-  -DHG_WIN64_DLL="$win64_dll" >/dev/null
+  -DHG_SUNDIALS_DIR="$sundials_dir" -DHG_WIN64_DLL="$win64_dll" >/dev/null
 cmake --build build -j"$(nproc)"
 echo "setup: built build/HypoidGearPair.fmu (binaries: $(python3 -c 'import sys, zipfile
 print(" ".join(sorted({n.split("/")[1] for n in zipfile.ZipFile(sys.argv[1]).namelist()

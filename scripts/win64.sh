@@ -39,28 +39,10 @@ toolchain() {
   fi
 }
 
-# SUNDIALS 6.4.1 (CVODE, ARKODE and what they need) as static Windows libraries, built once
+# SUNDIALS 6.4.1 as static Windows libraries, built once (scripts/sundials.sh)
 sundials_win64() {
-  local src=$1 prefix=$tp/sundials-win64
-  if [ ! -f "$prefix/lib/libsundials_arkode.a" ]; then
-    echo "win64: building SUNDIALS for Windows (static) into $prefix" >&2
-    rm -rf "$tp/sundials-win64-build"
-    cmake -S "$src" -B "$tp/sundials-win64-build" \
-      -DCMAKE_TOOLCHAIN_FILE="$root/cmake/mingw-w64-x86_64.cmake" \
-      -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_BUILD_TYPE=Release \
-      -DCMAKE_C_FLAGS_RELEASE="-O2 -ffp-contract=off" \
-      -DBUILD_SHARED_LIBS=OFF -DBUILD_STATIC_LIBS=ON -DBUILD_ARKODE=ON -DBUILD_CVODE=ON \
-      -DBUILD_CVODES=OFF -DBUILD_IDA=OFF -DBUILD_IDAS=OFF -DBUILD_KINSOL=OFF \
-      -DBUILD_FORTRAN_MODULE_INTERFACE=OFF -DBUILD_BENCHMARKS=OFF -DEXAMPLES_ENABLE_C=OFF \
-      -DEXAMPLES_ENABLE_CXX=OFF -DEXAMPLES_INSTALL=OFF -DENABLE_MPI=OFF -DENABLE_OPENMP=OFF \
-      -DENABLE_PTHREAD=OFF -DENABLE_LAPACK=OFF -DENABLE_KLU=OFF -DSUNDIALS_PRECISION=double \
-      -DSUNDIALS_INDEX_SIZE=64 >"$tp/sundials-win64.log" 2>&1 \
-      && cmake --build "$tp/sundials-win64-build" -j"$(nproc)" >>"$tp/sundials-win64.log" 2>&1 \
-      && cmake --install "$tp/sundials-win64-build" >>"$tp/sundials-win64.log" 2>&1 \
-      || { tail -30 "$tp/sundials-win64.log" >&2; exit 1; }
-    rm -rf "$tp/sundials-win64-build"
-  fi
-  echo "$prefix"
+  scripts/sundials.sh "$1" "$tp/sundials-win64" \
+    -DCMAKE_TOOLCHAIN_FILE="$root/cmake/mingw-w64-x86_64.cmake" | tail -1
 }
 
 fmi_include() {
