@@ -42,40 +42,42 @@ class Sampler:
         self.inst = inst
         self.settings = settings
         self.t = 0.0
-        self.real_refs = [inst.ref(n) for n in metrics.REALS]
-        self.int_refs = [inst.ref(n) for n in metrics.INTEGERS]
+        self.io = inst.fast_io(metrics.REALS, metrics.INTEGERS, inputs=("w_set",))
         self.cpu_start = time.process_time() if cpu_start is None else cpu_start
         self.theta = 0.0  # mesh angle N_p * integral of w_p dt since t = 0 (phi_p(0) = 0)
+        self.n_p = inst.pinion_teeth()
 
     def mesh_step(self, w_set):
         """Communication step for the pinion speed w_set [rad/s]."""
-        n_p = self.inst.pinion_teeth()
-        return 2.0 * math.pi / (n_p * w_set) / self.settings.samples_per_cycle
+        return 2.0 * math.pi / (self.n_p * w_set) / self.settings.samples_per_cycle
 
     def sample(self, n, h, w_ramp=None):
         """n steps of size h; w_ramp = (w_from, w_to) ramps w_set linearly over the n steps."""
-        reals = np.empty((n, len(self.real_refs)))
-        ints = np.empty((n, len(self.int_refs)), dtype=np.int64)
+        io = self.io
+        reals = np.empty((n, io.n_real))
+        ints = np.empty((n, io.n_int), dtype=np.int32)
         times = np.empty(n)
-        theta = np.empty(n)
-        slave = self.inst.slave
-        n_p, j_w = self.inst.pinion_teeth(), metrics.REALS.index("w_p")
+        r_at, r_stride = reals.ctypes.data, reals.strides[0]
+        i_at, i_stride = ints.ctypes.data, ints.strides[0]
+        t = self.t
         for i in range(n):
             if w_ramp is not None:
-                self.inst.set("w_set", w_ramp[0] + (w_ramp[1] - w_ramp[0]) * (i + 1) / n)
-            self.inst.do_step(self.t, h)
-            self.t += h
-            times[i] = self.t
-            reals[i] = slave.getReal(self.real_refs)
-            ints[i] = slave.getInteger(self.int_refs)
-            self.theta += n_p * reals[i, j_w] * h  # rectangle rule; drift << one mesh cycle
-            theta[i] = self.theta
+                io.set_inputs([w_ramp[0] + (w_ramp[1] - w_ramp[0]) * (i + 1) / n])
+            io.step(t, h)
+            t += h
+            times[i] = t
+            io.read(r_at + i * r_stride, i_at + i * i_stride)
+        self.t = t
+        # the mesh angle by the rectangle rule (drift << one mesh cycle), summed in step order
+        j_w = metrics.REALS.index("w_p")
+        theta = np.add.accumulate(np.concatenate(([self.theta], self.n_p * reals[:, j_w] * h)))
+        self.theta = float(theta[-1])
         if time.process_time() - self.cpu_start > self.settings.max_cpu:
             raise PointTimeout(f"more than {self.settings.max_cpu:g} s CPU at t = {self.t:.4f} s")
         out = {name: reals[:, j] for j, name in enumerate(metrics.REALS)}
-        out.update({name: ints[:, j] for j, name in enumerate(metrics.INTEGERS)})
+        out.update({name: ints[:, j].astype(np.int64) for j, name in enumerate(metrics.INTEGERS)})
         out["time"] = times
-        out["theta"] = theta
+        out["theta"] = theta[1:]
         return out
 
 

@@ -198,7 +198,10 @@ def main(argv):
     info["cpu_s_total"] = cpu
     (out / "study.json").write_text(json.dumps(info, indent=2) + "\n")
     if not args.no_report:
+        t0 = time.time()
         path = write_report(out, pts, cont, info)
+        info["report_s"] = time.time() - t0
+        (out / "study.json").write_text(json.dumps(info, indent=2) + "\n")
         print(f"hypoid study: report {path}")
     bad = int((pts["status"] != "ok").sum()) + (int((cont["status"] != "ok").sum())
                                                 if len(cont) else 0)

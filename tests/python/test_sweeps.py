@@ -10,7 +10,7 @@ import pandas as pd
 import pytest
 
 from hypoid import cliargs, continuation, lubricant, parallel, results, steady, study, sweep
-from hypoid.instance import Instance, normalize
+from hypoid.instance import FmuError, Instance, normalize
 
 QUICK = steady.Settings(window_cycles=10, min_settle_cycles=10, max_settle_time=0.05)
 OUTS = ("eta_rms", "eta_mean", "DTE_pp_um", "DTE_min_um", "W_t_mean_N", "mu_mean", "h_c_mean_um")
@@ -56,6 +56,24 @@ def test_reset_between_points_reproduces_a_fresh_instance(inst, fmu_path):
         fresh_inst.close()
     for k in OUTS:
         assert reused[k] == fresh[k], k
+
+
+def test_fast_io_reads_what_fmpy_reads_and_raises_the_fmus_errors(inst):
+    """The studies' hot loop (Instance.fast_io) against fmpy's own calls on the same instance."""
+    inst.start({"T_s": 100.0, "speed_rpm": 2000.0})
+    io = inst.fast_io(["w_p", "DTE", "pair[2].mu"], ["contact", "n_impacts"], ["w_set"])
+    reals, ints = np.zeros((2, 3)), np.zeros((2, 2), dtype=np.int32)
+    io.set_inputs([200.0])
+    io.step(0.0, 1e-4)
+    io.read(reals[1:].ctypes.data, ints[1:].ctypes.data)
+    assert inst.t == 1e-4 and inst.get("w_set") == 200.0
+    assert list(reals[1]) == inst.reals(["w_p", "DTE", "pair[2].mu"])
+    assert list(ints[1]) == inst.ints(["contact", "n_impacts"]) and not reals[0].any()
+    with pytest.raises(FmuError, match="does not continue the FMU time") as e:
+        io.step(0.5, 1e-4)
+    assert e.value.function == "fmi2DoStep"
+    with pytest.raises(FmuError, match=r"w_set = 1000000 rad/s .* outside its range"):
+        io.set_inputs([1e6])
 
 
 def test_window_is_sampled_32_times_per_mesh_cycle(inst):
