@@ -225,6 +225,19 @@ static double torque_filter_rate(const hg_dyn_params *p, const double *y, const 
     return (fabs(ev->W_t) * ev->mesh.R_p - y[HG_Y_T_KM]) / tau;
 }
 
+/* Q_dot = hg_ledger_heat_out(T_oil, T_amb, v_air), through the memo when there is one. */
+static double housing_heat(const hg_dyn_params *p, double T_oil, double T_amb, double v_air)
+{
+    hg_heat_memo *m = p->heat;
+    if (!m) return hg_ledger_heat_out(&p->ledger, T_oil, T_amb, v_air);
+    if (!m->valid || m->T_oil != T_oil || m->T_amb != T_amb || m->v_air != v_air) {
+        m->Q_dot = hg_ledger_heat_out(&p->ledger, T_oil, T_amb, v_air);
+        m->T_oil = T_oil, m->T_amb = T_amb, m->v_air = v_air;
+        m->valid = 1;
+    }
+    return m->Q_dot;
+}
+
 double hg_dyn_oil_temperature(const hg_dyn_params *p, const hg_inputs *u, const double *y)
 {
     return p->ledger.sump ? y[HG_Y_T_OIL] : u->T_bath;
@@ -249,7 +262,7 @@ void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const
         axle_losses(p, y, ev);
     }
     efficiency(u, y, ev);
-    ev->Q_dot = hg_ledger_heat_out(&p->ledger, ev->T_oil, u->T_amb, u->v_air);
+    ev->Q_dot = housing_heat(p, ev->T_oil, u->T_amb, u->v_air);
     ev->P_damp = p->c_t1 * d1 * d1 + p->c_t2 * d2 * d2 + p->c_m * ev->g * ev->xdot * ev->xdot;
     if (p->mesh == HG_MESH_MODEL_VARYING) {
         double N_p_w = p->gear->N_p * y[HG_Y_W_P];

@@ -32,6 +32,16 @@ enum {
     HG_NY
 };
 
+/* The housing heat of the last evaluation and what it was computed from: the oil and air
+ * temperatures and the air speed repeat exactly over a communication step unless the sump runs
+ * or the inputs are extrapolated, and the convection correlations cost a pow and two cbrt per
+ * evaluation. A cache: the same bits with or without it. */
+typedef struct {
+    int valid;
+    double T_oil, T_amb, v_air; /* [K], [K], [m/s] */
+    double Q_dot;               /* [W] */
+} hg_heat_memo;
+
 typedef struct {
     double I_s, I_p, I_g, I_w;   /* [kg m^2] */
     double k_t1, k_t2;           /* [N m/rad] */
@@ -50,6 +60,7 @@ typedef struct {
     int speed_governor;          /* load_mode = speed */
     double K_p, K_i;             /* governor gains [N m s/rad], [N m/rad] */
     hg_ledger ledger;            /* churning, bearings, seals and the sump (docs/axle.md) */
+    hg_heat_memo *heat;          /* the instance's cache of the housing heat, or NULL */
 } hg_dyn_params;
 
 typedef struct {

@@ -247,6 +247,8 @@ static void dynamics_params(hg_setup *s, const hg_vars *v)
     p->ratio = (double)s->gear.N_g / s->gear.N_p;
     p->gear = &s->gear;
     p->phase = hg_gearset_single_series(&s->gear) ? &s->phase : NULL;
+    s->heat.valid = 0; /* emptied: the ledger is set up anew below */
+    p->heat = &s->heat;
     p->friction.model = v->friction_model;
     p->friction.mu_const = v->mu_const;
     p->speed_governor = v->load_mode == HG_LOAD_MODE_SPEED;

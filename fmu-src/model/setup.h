@@ -17,7 +17,8 @@ typedef struct {
     hg_phase_table phase; /* gear's series tabulated */
     hg_lubricant lub;
     hg_effmap map;        /* friction_model = map only */
-    hg_dyn_params p;      /* points into gear, lub and map */
+    hg_heat_memo heat;    /* the housing heat's cache */
+    hg_dyn_params p;      /* points into gear, lub, map and heat */
     double atol[HG_NY];
     double rtol;
     double max_step;      /* user's max_step, 0 = automatic */

@@ -2,8 +2,8 @@
  * built by hand: the static equilibrium gives zero accelerations; a known shaft twist gives the
  * hand-computed torque; the rigid mesh turns pinion and gear as one body; and the power balance
  * dE_stored/dt = T_s w_s - T_w w_w - P_damp holds for an arbitrary state (the stored energy
- * differentiated numerically along ydot). Frictionless flanks, the mean and the rigid mesh: no
- * data files. */
+ * differentiated numerically along ydot); the housing heat's memo gives each evaluation its
+ * own value. Frictionless flanks, the mean and the rigid mesh: no data files. */
 #include "model/dynamics.h"
 
 #include <math.h>
@@ -184,6 +184,37 @@ static void test_power_balance(int mesh)
                 P, 1e-12, 1e-9);
 }
 
+/* The housing heat through the instance's memo: each evaluation's Q_dot is that of its own oil
+ * and air temperatures and air speed, also when they change between evaluations and come back.
+ * The first against the hand formula Q = A (h dT + eps sigma (T_oil^4 - T_amb^4)) with the
+ * natural-convection h = 1.42 (dT / L)^(1/4) (still air). */
+static void test_heat_memo(void)
+{
+    hg_dyn_params p = params(HG_MESH_MODEL_MEAN);
+    hg_heat_memo memo = {0};
+    hg_inputs u = inputs(100.0, 0.0, 0.0);
+    double y[HG_NY] = {0}, ydot[HG_NY], dT = 40.0, hand;
+    static const double T_bath[] = {333.15, 353.15, 353.15, 333.15, 333.15};
+    static const double v_air[] = {0.0, 0.0, 8.0, 8.0, 0.0};
+    hg_dyn_eval ev;
+    int k;
+    p.ledger.housing.A = 0.6, p.ledger.housing.L = 0.25, p.ledger.housing.eps = 0.9;
+    p.heat = &memo;
+    u.T_amb = 293.15;
+    y[HG_Y_W_S] = y[HG_Y_W_P] = 200.0, y[HG_Y_W_G] = y[HG_Y_W_W] = 200.0 / p.ratio;
+    for (k = 0; k < 5; k++) {
+        u.T_bath = T_bath[k], u.v_air = v_air[k];
+        evaluate(&p, &u, y, ydot, &ev);
+        CHECK(ev.Q_dot == hg_ledger_heat_out(&p.ledger, T_bath[k], u.T_amb, v_air[k]));
+        CHECK(ydot[HG_Y_Q_H] == ev.Q_dot);
+    }
+    hand = 0.6 * (1.42 * pow(dT / 0.25, 0.25) * dT +
+                  0.9 * 5.670374419e-8 * (pow(333.15, 4) - pow(293.15, 4)));
+    u.T_bath = 333.15, u.v_air = 0.0;
+    evaluate(&p, &u, y, ydot, &ev);
+    CHECK_CLOSE(ev.Q_dot, hand, 1e-12, 0.0);
+}
+
 int main(void)
 {
     test_static_equilibrium();
@@ -192,5 +223,6 @@ int main(void)
     test_governor();
     test_power_balance(HG_MESH_MODEL_MEAN);
     test_power_balance(HG_MESH_MODEL_RIGID);
+    test_heat_memo();
     CHECK_DONE();
 }
