@@ -12,7 +12,13 @@
  *   --cpu S (CPU seconds per batch, default 0.2), --warm T (simulated start-up before timing,
  *   default 0.2 s, at steps of max(H, 1 ms)), --read none|few|all (outputs read after every
  *   step: few = w_p, DTE, W_t, P_loss, eta, eta_cycle, the default), --set NAME=VALUE (any
- *   parameter or input, after the level's; repeatable), --levels a,b,c (subset).
+ *   parameter or input, after the level's; repeatable), --levels a,b,c (subset),
+ *   --variant LABEL:NAME=VALUE,... (levels: compare settings on this FMU, applied after --set;
+ *   repeatable, the first is the baseline; "LABEL:" alone is the level as it is),
+ *   --vs DIR (levels: every variant also on the unzipped FMU DIR, e.g. the one before a change).
+ * Variants of one level run side by side, their timed batches interleaved (A B A B ...), so that
+ * a load on the machine affects them alike; each row also gives its real-time factor relative to
+ * the level's first row (the same run).
  *
  * The scene is the FMU's default: gear set 1, OS265962, 2000 rpm held by the speed governor,
  * T_s = 100 N m, 40 degC. The level parameters are those of hypoid/levels.py. Each batch
@@ -30,6 +36,7 @@
 
 #define MAX_SETS 32
 #define MAX_RUNS 101
+#define MAX_VARIANTS 16
 #define TWO_PI 6.283185307179586
 
 typedef struct {
@@ -49,6 +56,14 @@ static const level LEVELS[] = {
 
 static const char *const FEW[] = {"w_p", "DTE", "W_t", "P_loss", "eta", "eta_cycle"};
 
+/* One thing to time: an FMU with settings applied after the level's and the --set ones. */
+typedef struct {
+    char label[128];
+    const fmu_lib *f;
+    const fmu_info *m;
+    const char *sets; /* NAME=VALUE,..., or "" */
+} variant;
+
 typedef struct {
     double h, cpu_budget, warm;
     int runs;
@@ -56,6 +71,9 @@ typedef struct {
     const char *sets[MAX_SETS];
     int n_sets;
     const char *levels; /* comma-separated subset, NULL = all */
+    const char *variants[MAX_VARIANTS]; /* LABEL:SETS */
+    int n_variants;
+    const char *vs; /* the other FMU's directory, or NULL */
 } options;
 
 typedef struct {
@@ -125,9 +143,10 @@ static int outputs_to_read(bench *b, const options *o)
     return 0;
 }
 
-static int open_bench(bench *b, const fmu_lib *f, const fmu_info *m, const level *lv,
-                      const options *o)
+static int open_bench(bench *b, const variant *v, const level *lv, const options *o)
 {
+    const fmu_lib *f = v->f;
+    const fmu_info *m = v->m;
     fmi2ValueReference vr_N_p;
     int k;
     memset(b, 0, sizeof *b);
@@ -137,6 +156,7 @@ static int open_bench(bench *b, const fmu_lib *f, const fmu_info *m, const level
         return -1;
     for (k = 0; k < o->n_sets; k++)
         if (apply(&b->in, o->sets[k])) return -1;
+    if (v->sets[0] && apply(&b->in, v->sets)) return -1;
     if (f->enter(b->in.c) != fmi2OK || f->exit_init(b->in.c) != fmi2OK)
         return host_fail("initialisation");
     if (vr_of(m, "solver_steps", &b->steps) || vr_of(m, "rhs_evals", &b->rhs) ||
@@ -191,39 +211,64 @@ static int batch(bench *b, int n, double h, figures *fig)
     return 0;
 }
 
-/* Start-up, a calibration of the batch length to the CPU budget, then o->runs batches. */
-static int measure(const fmu_lib *f, const fmu_info *m, const level *lv, const options *o,
-                   double h, figures *med)
+/* Start-up and a calibration of the batch length to the CPU budget: *n steps per batch. */
+static int prepare(bench *b, const variant *v, const level *lv, const options *o, double h,
+                   int *n)
 {
-    bench b;
-    figures fig[MAX_RUNS];
-    double v[MAX_RUNS], h_warm = h > 1e-3 ? h : 1e-3, t0, cpu = 0.0;
-    int n = 1, k, rc = -1;
-    if (open_bench(&b, f, m, lv, o) || steps(&b, (int)ceil(o->warm / h_warm - 1e-9), h_warm))
-        goto done;
-    for (;;) { /* calibration: double n until it costs a tenth of the budget */
+    double h_warm = h > 1e-3 ? h : 1e-3, t0, cpu = 0.0;
+    *n = 1;
+    if (open_bench(b, v, lv, o) || steps(b, (int)ceil(o->warm / h_warm - 1e-9), h_warm))
+        return -1;
+    for (;;) { /* double n until it costs a tenth of the budget */
         t0 = cpu_now();
-        if (steps(&b, n, h)) goto done;
+        if (steps(b, *n, h)) return -1;
         cpu = cpu_now() - t0;
-        if (cpu >= 0.1 * o->cpu_budget || n > 1 << 24) break;
-        n *= 2;
+        if (cpu >= 0.1 * o->cpu_budget || *n > 1 << 24) break;
+        *n *= 2;
     }
-    n = (int)fmax(1.0, n * o->cpu_budget / fmax(cpu, 1e-9));
-    for (k = 0; k < o->runs; k++)
-        if (batch(&b, n, h, &fig[k])) goto done;
+    *n = (int)fmax(1.0, *n * o->cpu_budget / fmax(cpu, 1e-9));
+    return 0;
+}
+
+static void medians(figures fig[MAX_RUNS], int runs, figures *med)
+{
+    double v[MAX_RUNS];
+    int k;
 #define MEDIAN(field)                                           \
-    for (k = 0; k < o->runs; k++) v[k] = fig[k].field;          \
-    med->field = median(v, o->runs)
+    for (k = 0; k < runs; k++) v[k] = fig[k].field;             \
+    med->field = median(v, runs)
     MEDIAN(rtf);
     MEDIAN(us_per_step);
     MEDIAN(steps_per_cycle);
     MEDIAN(rhs_per_cycle);
     MEDIAN(us_per_cycle);
 #undef MEDIAN
-    rc = b.in.log.errors ? host_fail("the FMU logged errors") : 0;
+}
+
+/* Every variant of one level side by side: start-up and calibration of each, then o->runs
+ * rounds of one timed batch per variant; med[j] are the medians of variant j. */
+static int measure(const variant *v, int nv, const level *lv, const options *o, double h,
+                   figures *med)
+{
+    bench *b = calloc((size_t)nv, sizeof *b);
+    figures(*fig)[MAX_RUNS] = calloc((size_t)nv, sizeof *fig);
+    int n[MAX_VARIANTS], j, k, opened = 0, rc = -1;
+    if (!b || !fig) goto done;
+    for (; opened < nv; opened++)
+        if (prepare(&b[opened], &v[opened], lv, o, h, &n[opened])) goto done;
+    for (k = 0; k < o->runs; k++)
+        for (j = 0; j < nv; j++)
+            if (batch(&b[j], n[j], h, &fig[j][k])) goto done;
+    for (j = 0; j < nv; j++) {
+        medians(fig[j], o->runs, &med[j]);
+        if (b[j].in.log.errors) goto done;
+    }
+    rc = 0;
 done:
-    host_close(&b.in);
-    return rc;
+    for (j = 0; b && j < nv && j <= opened; j++) host_close(&b[j].in);
+    free(b);
+    free(fig);
+    return rc ? host_fail("a run failed or the FMU logged errors") : 0;
 }
 
 static int chosen(const options *o, const char *name)
@@ -236,38 +281,45 @@ static int chosen(const options *o, const char *name)
     return 0;
 }
 
-static void print_settings(const options *o)
+static void print_settings(const options *o, const variant *v, int nv)
 {
     int k;
     printf("scene: FMU defaults (2000 rpm, 100 N.m, 40 degC, speed governor); outputs read per "
            "step: %s; %d batches of ~%.2g s CPU after %.2g s start-up; medians",
            o->read == 2 ? "all Reals" : o->read ? "6" : "none", o->runs, o->cpu_budget, o->warm);
     for (k = 0; k < o->n_sets; k++) printf("%s%s", k ? ", " : "; set: ", o->sets[k]);
-    printf("\n\n");
+    printf("\n");
+    for (k = 0; k < nv; k++)
+        printf("variant %d: %s (%s)%s%s\n", k + 1, v[k].label, v[k].m->so_path,
+               v[k].sets[0] ? ", set: " : "", v[k].sets);
+    printf("\n");
 }
 
-static int mode_levels(const fmu_lib *f, const fmu_info *m, const options *o)
+static int mode_levels(const variant *v, int nv, const options *o)
 {
-    int k;
-    print_settings(o);
-    printf("| level | real-time factor | us per fmi2DoStep | solver steps per mesh cycle | "
-           "rhs evaluations per mesh cycle | us CPU per mesh cycle |\n|---|---|---|---|---|---|\n");
+    figures fig[MAX_VARIANTS];
+    int k, j;
+    print_settings(o, v, nv);
+    printf("| level | variant | real-time factor | relative to the first row | us per fmi2DoStep | "
+           "solver steps per mesh cycle | rhs evaluations per mesh cycle | us CPU per mesh "
+           "cycle |\n|---|---|---|---|---|---|---|---|\n");
     for (k = 0; k < N_LEVELS; k++) {
-        figures fig;
         if (!chosen(o, LEVELS[k].name)) continue;
-        if (measure(f, m, &LEVELS[k], o, o->h, &fig)) return -1;
-        printf("| %s | %.4g | %.4g | %.3g | %.3g | %.4g |\n", LEVELS[k].name, fig.rtf,
-               fig.us_per_step, fig.steps_per_cycle, fig.rhs_per_cycle, fig.us_per_cycle);
+        if (measure(v, nv, &LEVELS[k], o, o->h, fig)) return -1;
+        for (j = 0; j < nv; j++)
+            printf("| %s | %s | %.4g | %.3g | %.4g | %.3g | %.3g | %.4g |\n", LEVELS[k].name,
+                   v[j].label, fig[j].rtf, fig[j].rtf / fig[0].rtf, fig[j].us_per_step,
+                   fig[j].steps_per_cycle, fig[j].rhs_per_cycle, fig[j].us_per_cycle);
         fflush(stdout);
     }
     return 0;
 }
 
-static int mode_steps(const fmu_lib *f, const fmu_info *m, const options *o)
+static int mode_steps(const variant *v, const options *o)
 {
     static const double H[] = {1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1, 1.0};
     int k, j, nh = (int)(sizeof H / sizeof H[0]);
-    print_settings(o);
+    print_settings(o, v, 1);
     printf("real-time factor (us CPU per fmi2DoStep) against the communication step\n\n| level |");
     for (j = 0; j < nh; j++) printf(" %g s |", H[j]);
     printf("\n|---|");
@@ -278,7 +330,7 @@ static int mode_steps(const fmu_lib *f, const fmu_info *m, const options *o)
         printf("| %s |", LEVELS[k].name);
         for (j = 0; j < nh; j++) {
             figures fig;
-            if (measure(f, m, &LEVELS[k], o, H[j], &fig)) return -1;
+            if (measure(v, 1, &LEVELS[k], o, H[j], &fig)) return -1;
             printf(" %.3g (%.3g) |", fig.rtf, fig.us_per_step);
             fflush(stdout);
         }
@@ -287,13 +339,13 @@ static int mode_steps(const fmu_lib *f, const fmu_info *m, const options *o)
     return 0;
 }
 
-static int mode_run(const fmu_lib *f, const fmu_info *m, const options *o, const char *name)
+static int mode_run(const variant *v, const options *o, const char *name)
 {
     int k;
     for (k = 0; k < N_LEVELS; k++) {
         figures fig;
         if (strcmp(LEVELS[k].name, name)) continue;
-        if (measure(f, m, &LEVELS[k], o, o->h, &fig)) return -1;
+        if (measure(v, 1, &LEVELS[k], o, o->h, &fig)) return -1;
         printf("%s at h = %g s: real-time factor %.4g, %.4g us per step, %.3g solver steps and "
                "%.3g rhs evaluations per mesh cycle, %.4g us CPU per mesh cycle\n", name, o->h,
                fig.rtf, fig.us_per_step, fig.steps_per_cycle, fig.rhs_per_cycle,
@@ -307,7 +359,7 @@ static int parse(int argc, char **argv, int first, options *o)
 {
     int k;
     o->h = 1e-3, o->cpu_budget = 0.2, o->warm = 0.2, o->runs = 5, o->read = 1;
-    o->n_sets = 0, o->levels = NULL;
+    o->n_sets = 0, o->levels = NULL, o->n_variants = 0, o->vs = NULL;
     for (k = first; k < argc; k++) {
         const char *a = argv[k], *v = k + 1 < argc ? argv[k + 1] : NULL;
         if (!v) return host_fail(a);
@@ -320,6 +372,10 @@ static int parse(int argc, char **argv, int first, options *o)
         else if (strcmp(a, "--read") == 0)
             o->read = strcmp(v, "none") == 0 ? 0 : strcmp(v, "all") == 0 ? 2 : 1;
         else if (strcmp(a, "--set") == 0 && o->n_sets < MAX_SETS) o->sets[o->n_sets++] = v;
+        else if (strcmp(a, "--variant") == 0 && strchr(v, ':') &&
+                 o->n_variants < MAX_VARIANTS / 2)
+            o->variants[o->n_variants++] = v;
+        else if (strcmp(a, "--vs") == 0) o->vs = v;
         else return host_fail(a);
     }
     if (o->h <= 0.0 || o->runs < 1 || o->runs > MAX_RUNS || o->cpu_budget <= 0.0 || o->warm < 0.0)
@@ -327,25 +383,61 @@ static int parse(int argc, char **argv, int first, options *o)
     return 0;
 }
 
+/* The variants to time: the --variant ones (or the FMU as it is), then each again on the --vs
+ * FMU. Returns their number. */
+static int make_variants(const options *o, const fmu_lib *f, const fmu_info *m,
+                         const fmu_lib *f_vs, const fmu_info *m_vs, variant *v)
+{
+    int k, n = o->n_variants ? o->n_variants : 1, nv = 0;
+    for (k = 0; k < n; k++, nv++) {
+        const char *spec = o->n_variants ? o->variants[k] : "this FMU:";
+        const char *colon = strchr(spec, ':');
+        int len = (int)(colon - spec);
+        snprintf(v[nv].label, sizeof v[nv].label, "%.*s", len > 100 ? 100 : len, spec);
+        v[nv].f = f, v[nv].m = m, v[nv].sets = colon + 1;
+    }
+    for (k = 0; o->vs && k < n; k++, nv++) {
+        v[nv] = v[k];
+        v[nv].f = f_vs, v[nv].m = m_vs;
+        snprintf(v[nv].label, sizeof v[nv].label, "%.100s, --vs FMU", v[k].label);
+    }
+    return nv;
+}
+
+static int run_mode(int argc, char **argv, const options *o, const variant *v, int nv)
+{
+    if (strcmp(argv[2], "levels") == 0) return mode_levels(v, nv, o);
+    if (strcmp(argv[2], "steps") == 0) return mode_steps(v, o);
+    if (argc > 3 && strcmp(argv[2], "run") == 0) return mode_run(v, o, argv[3]);
+    return host_fail("unknown mode");
+}
+
 int main(int argc, char **argv)
 {
-    fmu_info m;
-    fmu_lib f;
+    fmu_info m, m_vs;
+    fmu_lib f, f_vs;
     options o;
+    variant v[MAX_VARIANTS];
     int rc = -1, run = argc > 3 && strcmp(argv[2], "run") == 0;
     if (argc < 3 || parse(argc, argv, run ? 4 : 3, &o)) {
         fprintf(stderr, "usage: bench_fmu FMU_DIR levels|steps|run LEVEL [--h H] [--runs N] "
-                "[--cpu S] [--warm T] [--read none|few|all] [--set NAME=VALUE] [--levels a,b]\n");
+                "[--cpu S] [--warm T] [--read none|few|all] [--set NAME=VALUE] [--levels a,b] "
+                "[--variant LABEL:NAME=VALUE,...] [--vs FMU_DIR]\n");
         return 2;
     }
     if (host_read_info(&m, argv[1])) return 1;
+    if (o.vs && host_read_info(&m_vs, o.vs)) {
+        host_free_info(&m);
+        return 1;
+    }
     if (host_load(&f, m.so_path) == 0) {
-        if (strcmp(argv[2], "levels") == 0) rc = mode_levels(&f, &m, &o);
-        else if (strcmp(argv[2], "steps") == 0) rc = mode_steps(&f, &m, &o);
-        else if (run) rc = mode_run(&f, &m, &o, argv[3]);
-        else rc = host_fail("unknown mode");
+        if (!o.vs || host_load(&f_vs, m_vs.so_path) == 0) {
+            rc = run_mode(argc, argv, &o, v, make_variants(&o, &f, &m, &f_vs, &m_vs, v));
+            if (o.vs) host_unload(&f_vs);
+        }
         host_unload(&f);
     }
+    if (o.vs) host_free_info(&m_vs);
     host_free_info(&m);
     return rc ? 1 : 0;
 }
