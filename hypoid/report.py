@@ -213,9 +213,11 @@ def _lossmap_comparison(lm):
           "warm and at high power, up to 40 % cold at low power; Xu, Singh, Maddock, Kahraman "
           "and Hurley (SAE) measured rear-axle mechanical and spin losses varying strongly with "
           "oil temperature and bearing preload.",
-          f"- Reading: {_reading(loaded, hi_pub)} Measured breakdowns commonly give churning "
-          "a larger share than this map: the disc churning formula and the assumed preload and "
-          "f_0 are the values to calibrate first (docs/axle.md, 'How the figures compare')."]
+          f"- Reading: {_reading(loaded, hi_pub)} JTEKT (FISITA 2006, F2006P299) attribute "
+          "about half of a rear axle's loss to the pinion bearings; the pinion preload here is "
+          "calibrated to workshop rotating-torque specifications, f_0 and the churning "
+          "coefficients are not verified (docs/axle.md, 'How the figures compare' and "
+          "'Constants against published sources')."]
     return L
 
 

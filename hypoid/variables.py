@@ -11,7 +11,7 @@ from typing import NamedTuple
 
 MODEL_NAME = 'HypoidGearPair'
 MODEL_VERSION = '0.1.0'
-GUID = '{c0d0b81a-9454-5b31-8781-ae0aeb88d146}'
+GUID = '{8a2aef15-dedb-543a-9bea-1de210019644}'
 
 
 class Variable(NamedTuple):
@@ -111,8 +111,8 @@ _TABLE = (
     Variable(name='P_loss_viscous', vr=74, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='viscous (film shear) part of P_loss; 0 for friction_model = coulomb and map'),
     Variable(name='P_loss_boundary', vr=75, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='boundary (asperity) part of P_loss: P_loss - P_loss_viscous'),
     Variable(name='P_churn', vr=76, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='churning loss of the ring gear in the sump (axle_losses = full; Changenet & Velex)'),
-    Variable(name='P_bearings', vr=77, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='friction loss of the four tapered roller bearings (axle_losses = full; Palmgren as in ISO/TR 14179-2)'),
-    Variable(name='P_seals', vr=78, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='friction loss of the pinion seal and the two axle-shaft seals (axle_losses = full; ISO/TR 14179-1)'),
+    Variable(name='P_bearings', vr=77, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description="friction loss of the four tapered roller bearings (axle_losses = full; Palmgren's M_0 + M_1)"),
+    Variable(name='P_seals', vr=78, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='friction loss of the pinion seal and the two axle-shaft seals (axle_losses = full; ISO/TR 14179-2)'),
     Variable(name='P_axle', vr=79, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='all losses of the axle: P_loss + P_churn + P_bearings + P_seals'),
     Variable(name='P_in_axle', vr=80, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='power entering the axle from the side that drives at this instant (pinion shaft or wheel shaft)'),
     Variable(name='eta_axle', vr=81, causality='output', variability='continuous', type='Real', enumeration=None, unit='', display_unit=None, start=None, min=None, max=None, description='axle efficiency 1 - P_axle / P_in_axle (0 when no power enters but losses occur)'),
@@ -195,9 +195,9 @@ _TABLE = (
     Variable(name='brg_gf_dm', vr=158, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='m', display_unit='mm', start=0.062, min=0.005, max=0.5, description='mean diameter of the carrier bearing on the far side of the differential'),
     Variable(name='brg_gf_Y', vr=159, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='', display_unit=None, start=1.6, min=0.3, max=5.0, description='axial load factor Y of the far carrier bearing'),
     Variable(name='brg_gf_x', vr=160, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='m', display_unit='mm', start=0.115, min=0.001, max=1.0, description="distance from the ring's mean point to the far carrier bearing (towards the ring's apex)"),
-    Variable(name='brg_f0', vr=161, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='', display_unit=None, start=3.0, min=0.5, max=20.0, description="Palmgren's load-independent factor f_0 of the tapered roller bearings (oil bath, horizontal shaft; ISO/TR 14179-2 and Harris give about 2-6 by series)"),
-    Variable(name='brg_f1', vr=162, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='', display_unit=None, start=0.0004, min=0.0, max=0.01, description="Palmgren's load-dependent factor f_1 (0.0004 for tapered roller bearings, ISO/TR 14179-2)"),
-    Variable(name='F_pre_p', vr=163, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='N', display_unit=None, start=3000.0, min=0.0, max=100000.0, description='axial preload of the pinion bearing pair'),
+    Variable(name='brg_f0', vr=161, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='', display_unit=None, start=3.0, min=0.5, max=20.0, description="Palmgren's load-independent factor f_0 of the tapered roller bearings (oil bath, horizontal shaft; about 2-6 by series, a value not checked against a published table: docs/axle.md)"),
+    Variable(name='brg_f1', vr=162, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='', display_unit=None, start=0.0004, min=0.0, max=0.01, description="Palmgren's load-dependent factor f_1 (0.0004 for tapered roller bearings, with P_1 = 2 Y F_a)"),
+    Variable(name='F_pre_p', vr=163, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='N', display_unit=None, start=6000.0, min=0.0, max=100000.0, description='axial preload of the pinion bearing pair, as the Palmgren model sees it: 6 kN turns the pinion pair at 0.99 N.m at 30 r/min, inside the workshop specifications for run-in bearings (0.6-1.7 N.m; 4-10 kN spans them; docs/axle.md)'),
     Variable(name='F_pre_g', vr=164, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='N', display_unit=None, start=2000.0, min=0.0, max=100000.0, description='axial preload of the carrier bearing pair'),
     Variable(name='d_seal_p', vr=165, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='m', display_unit='mm', start=0.045, min=0.005, max=0.5, description='shaft diameter at the pinion (flange) lip seal'),
     Variable(name='d_seal_w', vr=166, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='m', display_unit='mm', start=0.04, min=0.005, max=0.5, description='shaft diameter at each of the two axle-shaft lip seals'),

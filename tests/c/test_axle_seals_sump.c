@@ -1,5 +1,5 @@
 /* Lip seals and the housing's heat to the air (fmu-src/axle/seals.c, sump.c) against hand
- * calculations of the published correlations (ISO/TR 14179-1 seals; Holman's simplified
+ * calculations of the published correlations (ISO/TR 14179-2 seals; Holman's simplified
  * natural convection in air, Incropera's flat-plate forced convection, Churchill's n = 3
  * combination, grey-body radiation). */
 #include "check.h"
@@ -16,7 +16,7 @@ static double heat(const hg_housing *h, double T_oil, double T_amb, double v_air
 
 int main(void)
 {
-    /* ISO/TR 14179-1: d = 40 mm, n = 3000 r/min -> P = 7.69e-6 * 1600 * 3000 = 36.912 W */
+    /* ISO/TR 14179-2: d = 40 mm, n = 3000 r/min -> P = 7.69e-6 * 1600 * 3000 = 36.912 W */
     double w = 3000.0 * PI / 30.0;
     CHECK_CLOSE(hg_seal_torque(0.040) * w, 36.912, 1e-12, 0);
     /* natural convection, dT 50 K on L = 0.25 m: 1.42 (200)^(1/4) = 5.34006 W/(m^2 K) */
