@@ -37,7 +37,7 @@ def run(cycle, level, args):
             "axle_loss_J": s["axle_loss_J"], "axle_losses_J": s["axle_losses_J"],
             "mean_axle_efficiency": s["mean_axle_efficiency"],
             "T_oil_rise_K": s["T_oil_degC"]["end"] - s["T_oil_degC"]["start"],
-            "speed_tracking_rms_kmh": s["speed_tracking_rms_kmh"]}
+            "speed_tracking_rms_kmh": s["speed_tracking_rms_kmh"], "audit": s["audit"]}
 
 
 def main():

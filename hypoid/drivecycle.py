@@ -52,7 +52,8 @@ LEVELS = {
 
 GEAR_OUT = ["w_w", "w_p", "T_oil", "P_loss", "P_loss_viscous", "P_churn", "P_bearings",
             "P_seals", "P_axle", "P_in_axle", "eta_axle", "E_in", "E_out", "E_friction",
-            "E_churn", "E_bearings", "E_seals", "Q_housing", "Q_dot_housing"]
+            "E_churn", "E_bearings", "E_seals", "Q_housing", "Q_dot_housing", "E_damping",
+            "E_excitation", "E_stored"]
 VEHICLE_OUT = ["T_hs", "v", "x", "E_road", "E_brake", "E_grade"]
 PARTS = {"mesh": "E_friction", "churning": "E_churn", "bearings": "E_bearings",
          "seals": "E_seals"}
@@ -221,6 +222,7 @@ class Run:
     T_oil0: float            # K
     rows: dict               # name -> array over the steps (time first)
     wall: float              # s
+    C_sump: float            # J/K, the gear FMU's (for the heat balance)
 
 
 def gear_start(level, vehicle, I_w0, T_oil0, T_amb, extra):
@@ -342,12 +344,28 @@ def simulate(cycle, gear_fmu, vehicle_fmu, level, T_oil0, T_amb, h, extra, label
     finally:
         m.close()
     rows = {name: rec[:, j] for j, name in enumerate(names)}
-    return Run(label, T_oil0, rows, time.perf_counter() - wall)
+    C_sump = float(g_values.get("C_sump", TABLE.variable("C_sump").start))
+    return Run(label, T_oil0, rows, time.perf_counter() - wall, C_sump)
 
 
 # ---------------------------------------------------------------------------- results
 def energy_at(rows, name, t):
     return float(np.interp(t, rows["time"], rows[name]))
+
+
+def audit(run, E_through):
+    """The gear FMU's two balances at the end of the run, in J and relative to the energy that
+    went into the axle (docs/axle.md, "Energy audit"):
+      heat:   C_sump (T_oil - T_oil0) - (E_friction + E_churn + E_bearings + E_seals - Q_housing)
+      energy: E_in - E_out - losses - E_damping + E_excitation - (E_stored - E_stored(0))."""
+    e = {name: float(col[-1]) for name, col in run.rows.items()}
+    losses = sum(e[name] for name in PARTS.values())
+    heat = run.C_sump * (e["T_oil"] - float(run.rows["T_oil"][0])) - (losses - e["Q_housing"])
+    energy = e["E_in"] - e["E_out"] - losses - e["E_damping"] + e["E_excitation"] \
+        - (e["E_stored"] - float(run.rows["E_stored"][0]))
+    return {"heat_residual_J": heat, "energy_residual_J": energy,
+            "heat_residual_relative": heat / E_through,
+            "energy_residual_relative": energy / E_through}
 
 
 def summarise(run, cycle, h):
@@ -384,6 +402,7 @@ def summarise(run, cycle, h):
         "heat_to_air_J": float(r["Q_housing"][-1]),
         "speed_tracking_rms_kmh": float(np.sqrt(np.mean((r["v"] - r["v_target"]) ** 2)) / KMH),
         "phases": phases,
+        "audit": audit(run, E_through),
     }
 
 
@@ -419,6 +438,9 @@ def markdown(meta, runs, diff):
     row("axle loss (kJ)", lambda s: f"{s['axle_loss_J'] * kj:.1f}")
     row("mean axle efficiency (%)", lambda s: f"{100 * s['mean_axle_efficiency']:.2f}")
     row("speed tracking RMS (km/h)", lambda s: f"{s['speed_tracking_rms_kmh']:.2f}")
+    row("residual of the heat balance / energy audit (of the energy into the axle)",
+        lambda s: "{heat_residual_relative:.1e} / {energy_residual_relative:.1e}".format(
+            **s["audit"]))
     row("wall time (s)", lambda s: f"{s['wall_s']:.1f}")
     lines += ["", "Losses by phase (kJ): mesh / churning / bearings / seals = total", ""]
     for s in runs:

@@ -107,6 +107,28 @@ def test_short_cycle_heat_and_energy_balances_close(short_cycle):
     assert np.max(np.abs(heat - (losses - r["Q_housing"]))) < 1e-6 * through
     E_wheels = r["E_out"][-1]  # the vehicle is at rest at both ends
     assert E_wheels == pytest.approx(r["E_road"][-1] + r["E_brake"][-1], rel=0.02)
+    # the summary's audit: the heat balance to round-off, the energy audit to the fast level's
+    # integration tolerance (rtol 1e-4; measured 1.05e-3 warm, where little energy goes through
+    # this short piece)
+    for run in s["runs"]:
+        assert abs(run["audit"]["heat_residual_relative"]) < 1e-9
+        assert abs(run["audit"]["energy_residual_relative"]) < 5e-3
+
+
+def test_wltc_launch_energy_audit_closes_to_1e_6():
+    """The first 60 s of WLTC class 3 from a cold start (standing, launch, two urban peaks, a
+    stop): with the gear FMU at rtol 1e-8 the energy audit of the axle closes to 1e-6 of the
+    energy that went into it and the heat balance to round-off. The representative part of
+    the whole-cycle audit (docs/axle.md, "Energy audit": the whole cycle at the same settings
+    with `hypoid drive-cycle --no-warm --set rtol=1e-8`)."""
+    cycle = drivecycle.builtin_cycle("wltc3")
+    run = drivecycle.simulate(cycle, drivecycle.ROOT / "build" / "HypoidGearPair.fmu",
+                              drivecycle.DEFAULT_VEHICLE_FMU, "fast", 293.15, 293.15, 0.05,
+                              {"rtol": 1e-8}, "cold", until=60.0)
+    s = drivecycle.summarise(run, cycle, 0.05)
+    assert s["energy_into_axle_J"] > 1e5 and np.max(run.rows["v"]) > 5.0
+    assert abs(s["audit"]["heat_residual_relative"]) < 1e-9
+    assert abs(s["audit"]["energy_residual_relative"]) < 1e-6
 
 
 def test_vehicle_road_load_coupling_matches_its_formula():
