@@ -36,9 +36,11 @@ done < <(scripts/third_party.sh)
 # SUNDIALS for linux64 built with optimisation from the same source (else Debian's archives)
 [ -z "$sundials" ] ||
   sundials_dir=$(scripts/sundials.sh "$sundials" "$PWD/build/third_party/sundials-linux64" | tail -1)
-win64_dll=$(scripts/win64.sh build | tail -1)
+win64=$(scripts/win64.sh build | tail -2) # the vehicle's DLL, then the gear's (or nothing)
+win64_dll=$(tail -1 <<<"$win64") win64_vehicle_dll=$(sed -n '1{$!p}' <<<"$win64")
 cmake -S . -B build -DHG_PYTHON="$PWD/.venv/bin/python" -DHG_MUSL_DIR="$musl" \
-  -DHG_SUNDIALS_DIR="$sundials_dir" -DHG_WIN64_DLL="$win64_dll" >/dev/null
+  -DHG_SUNDIALS_DIR="$sundials_dir" -DHG_WIN64_DLL="$win64_dll" \
+  -DHG_WIN64_VEHICLE_DLL="$win64_vehicle_dll" >/dev/null
 cmake --build build -j"$(nproc)"
 echo "setup: built build/HypoidGearPair.fmu (binaries: $(python3 -c 'import sys, zipfile
 print(" ".join(sorted({n.split("/")[1] for n in zipfile.ZipFile(sys.argv[1]).namelist()

@@ -3,12 +3,14 @@
 # Wine (docs/portability.md):
 #
 #   scripts/win64.sh build   the toolchain (apt: mingw-w64, wine64), SUNDIALS 6.4.1 for Windows
-#                            (static, from Debian's source package) and build/win64/: the DLL and
-#                            the C tests; prints the DLL's path on its last line (setup.sh puts it
-#                            into the FMUs)
+#                            (static, from Debian's source package) and build/win64/: the DLLs
+#                            (the gear's and the example vehicle's) and the C tests; prints the
+#                            vehicle DLL's path and, on its last line, the gear DLL's (setup.sh
+#                            puts them into the FMUs)
 #   scripts/win64.sh test    the DLL's exports and imports (objdump), the C unit tests and the C
 #                            host (tests/host) under Wine on build/HypoidGearPair.fmu, and the
-#                            linux64/win64 agreement (tests/portability/compare.py)
+#                            linux64/win64 agreement (tests/portability/compare.py); the vehicle
+#                            FMU's DLL: exports, imports and the same output bits as linux64
 #
 # Third-party pieces are cached under build/third_party/ (sources, SUNDIALS for Windows, the Wine
 # prefix), so only the first run downloads and builds them. Where the cross toolchain cannot be
@@ -66,6 +68,7 @@ build() {
   # the project's C host, for Windows
   $triple-gcc -std=c99 -O2 -Wall -Wextra -Wpedantic -Werror -I"$(fmi_include)" \
     tests/host/run_fmu.c tests/host/fmu_host.c -o "$win/run_fmu.exe" -static -lpthread
+  echo "$win/vehicle_fmu/binaries/win64/LongitudinalVehicle.dll"
   echo "$win/fmu/binaries/win64/HypoidGearPair.dll"
 }
 
@@ -106,7 +109,23 @@ run_tests() {
     tests/host/fmu_host.c -o "$win/run_fmu_linux" -ldl -lpthread
   .venv/bin/python tests/portability/compare.py --fmu-dir "$dir" --wine "$wine" \
     --win-host "$win/run_fmu.exe" --linux-host "$win/run_fmu_linux"
+  vehicle
   /usr/lib/wine/wineserver -w # Wine's server ends a few seconds after its last client: wait
+}
+
+# The example vehicle FMU (examples/vehicle): its DLL's exports and imports, and every Real
+# output bit for bit as on linux64 after 1 s of road load and braking (the C host's `outputs`)
+vehicle() {
+  local fmu=build/LongitudinalVehicle.fmu dir=$win/vehicle-unzipped
+  local run=(outputs 1.0 coupling=2 w_w=50 T_brake=120)
+  rm -rf "$dir" && python3 -m zipfile -e "$fmu" "$dir" && mkdir -p "$dir/resources"
+  [ -f "$dir/binaries/win64/LongitudinalVehicle.dll" ] \
+    || { echo "win64: FAILED - $fmu has no binaries/win64/LongitudinalVehicle.dll" >&2; exit 1; }
+  check_dll "$dir/binaries/win64/LongitudinalVehicle.dll"
+  diff <($wine "$win/run_fmu.exe" "Z:${dir//\//\\}" "${run[@]}" | tr -d '\r') \
+    <("$win/run_fmu_linux" "$dir" "${run[@]}") >/dev/null \
+    || { echo "win64: FAILED - the vehicle FMU's outputs differ between win64 and linux64" >&2; exit 1; }
+  echo "win64: the vehicle FMU's $(grep -c '' <("$win/run_fmu_linux" "$dir" "${run[@]}")) Real values agree bit for bit with linux64"
 }
 
 case $mode in
