@@ -12,7 +12,7 @@ from hypoid import lossmap, parallel, report
 
 @pytest.fixture(scope="module")
 def lm(fmu_path):
-    return lossmap.run(parallel.FmuRef(fmu_path), [40.0, 80.0], [1000, 4000], [0, 200])
+    return lossmap.run(parallel.FmuRef(fmu_path), [40.0, 80.0], [1000, 4000], [0, 50, 200])
 
 
 def test_parts_add_up_to_P_axle_and_eta_axle(lm):
@@ -29,6 +29,22 @@ def test_warm_oil_lowers_the_loaded_mesh_and_bearing_losses(lm):
     for n in (1000, 4000):
         assert at.loc[(80.0, n, 200), "P_loss"] < 0.8 * at.loc[(40.0, n, 200), "P_loss"]
         assert at.loc[(80.0, n, 200), "P_bearings"] < at.loc[(40.0, n, 200), "P_bearings"]
+
+
+def test_the_map_follows_the_trends_trl_rr10_measured(lm):
+    """TRL report RR10 (dynamometer tests of Ford Transit axles): efficiency improving with
+    increasing oil temperature; with cold, viscous oil the power loss rising about linearly with
+    speed and the efficiency improving as the transmitted power rises. Here: warm oil is more
+    efficient at every loaded point, 200 N.m more efficient than 50 N.m, and the spin loss at
+    40 degC grows with speed as n^k with k between 0.8 and 1.5 (1000 -> 4000 rpm)."""
+    at = lm.set_index(["T_oil_C", "speed_rpm", "T_s"])
+    for n in (1000, 4000):
+        for tq in (50, 200):
+            assert at.loc[(80.0, n, tq), "eta_axle"] > at.loc[(40.0, n, tq), "eta_axle"]
+        for T in (40.0, 80.0):
+            assert at.loc[(T, n, 200), "eta_axle"] > at.loc[(T, n, 50), "eta_axle"]
+    k = np.log(at.loc[(40.0, 4000, 0), "P_axle"] / at.loc[(40.0, 1000, 0), "P_axle"]) / np.log(4)
+    assert 0.8 < k < 1.5, k
 
 
 def test_report_section_prints_a_map_whose_numbers_obey_the_identity(lm):
