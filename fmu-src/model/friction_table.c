@@ -19,15 +19,50 @@ void hg_ft_key_for(double w_p, double ratio, double T_bath, double W_t, hg_ft_ke
     key->w_g = w_p / ratio;
     key->T_bath = T_bath;
     key->W_max = fmax(2.0 * fabs(W_t), W_FLOOR);
+    key->w_dir = 0.0;
+}
+
+static int speed_covers(double key_w_p, double w_p)
+{
+    return fabs(w_p - key_w_p) <= HG_FT_SPEED_DRIFT * fmax(fabs(key_w_p), SPEED_FLOOR);
+}
+
+static int temperature_covers(double key_T, double T_bath)
+{
+    return fabs(T_bath - key_T) <= HG_FT_T_DRIFT;
+}
+
+static int load_covers(double W_max, double W_t)
+{
+    double W = fabs(W_t);
+    if (W > HG_FT_LOAD_FILL * W_max) return 0;
+    return W >= LOAD_LOW * W_max || W_max <= W_FLOOR;
 }
 
 int hg_ft_key_covers(const hg_ft_key *key, double w_p, double T_bath, double W_t)
 {
-    double W = fabs(W_t);
-    if (fabs(w_p - key->w_p) > HG_FT_SPEED_DRIFT * fmax(fabs(key->w_p), SPEED_FLOOR)) return 0;
-    if (fabs(T_bath - key->T_bath) > HG_FT_T_DRIFT) return 0;
-    if (W > HG_FT_LOAD_FILL * key->W_max) return 0;
-    return W >= LOAD_LOW * key->W_max || key->W_max <= W_FLOOR;
+    return speed_covers(key->w_p, w_p) && temperature_covers(key->T_bath, T_bath) &&
+           load_covers(key->W_max, W_t);
+}
+
+void hg_ft_key_next(hg_ft_key *key, int valid, double w_p, double ratio, double T_bath,
+                    double W_t)
+{
+    hg_ft_key fresh;
+    hg_ft_key_for(w_p, ratio, T_bath, W_t, &fresh);
+    if (!valid) {
+        *key = fresh;
+        return;
+    }
+    if (!speed_covers(key->w_p, w_p)) {
+        double dir = w_p > key->w_p ? 1.0 : -1.0, half = 0.5 * (key->w_p + w_p);
+        int reversal = key->w_dir == -dir && speed_covers(half, w_p);
+        key->w_p = reversal ? half : w_p;
+        key->w_dir = reversal ? 0.0 : dir;
+        key->w_g = key->w_p / ratio;
+    }
+    if (!temperature_covers(key->T_bath, T_bath)) key->T_bath = T_bath;
+    if (!load_covers(key->W_max, W_t)) key->W_max = fresh.W_max;
 }
 
 /* ln mu of the friction model at one point of the path (mu floored for pairs out of contact). */

@@ -135,7 +135,7 @@ static void update_table(hg_model *m, const hg_inputs *u)
     W = fmax(fabs(u->T_s) / p->R_p0,
              p->k_m0 * fabs(hg_backlash_f(&p->backlash, rt->y[HG_Y_X], rt->mode)));
     if (!rt->ft_valid || !hg_ft_key_covers(&rt->ft_key, w_p, T_oil, W)) {
-        hg_ft_key_for(w_p, p->ratio, T_oil, W, &rt->ft_key);
+        hg_ft_key_next(&rt->ft_key, rt->ft_valid, w_p, p->ratio, T_oil, W);
         rt->ft_valid = 1;
     }
     if (!m->table->built || memcmp(&m->table->key, &rt->ft_key, sizeof rt->ft_key)) {

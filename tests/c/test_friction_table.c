@@ -2,7 +2,8 @@
  * and isothermal EHL, at operating points spread over the table's whole validity range (phase,
  * load down to the rebuild limit, speed and temperature drifts up to the rebuild thresholds).
  * Errors are measured relative to the friction force of the pair at the same phase under the
- * full load of the key, the scale on which the mesh loss is summed. */
+ * full load of the key, the scale on which the mesh loss is summed. And how the key moves when
+ * the operating point leaves it (hg_ft_key_next). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -69,6 +70,39 @@ static double worst_error(const hg_friction_config *cfg, const hg_gearset *g, do
     return worst;
 }
 
+/* Rebuilds counted while the operating point follows w_p(n) = w0 (1 + a s(n)) over n steps
+ * (load and temperature fixed), through hg_ft_key_next as the model calls it. */
+static int rebuilds(double w0, double a, int oscillate, int n)
+{
+    hg_ft_key key = {0};
+    int valid = 0, count = 0, k;
+    for (k = 0; k < n; k++) {
+        double s = oscillate ? (k % 2 ? -1.0 : 1.0) : (double)k / (n - 1);
+        double w_p = w0 * (1.0 + a * s);
+        if (valid && hg_ft_key_covers(&key, w_p, 313.15, 4760.0)) continue;
+        hg_ft_key_next(&key, valid, w_p, 36.0 / 13.0, 313.15, 4760.0);
+        CHECK(hg_ft_key_covers(&key, w_p, 313.15, 4760.0)); /* the new key serves the point */
+        valid = 1;
+        count++;
+    }
+    return count;
+}
+
+/* hg_ft_key_next: a speed swing of +-0.8 windows (a span of 1.6) keeps one table after its
+ * first two extremes (the key used to follow the instantaneous speed: a rebuild at every
+ * extreme); a 30 % ramp needs no more rebuilds than one per window; a load rebuild keeps the
+ * speed and temperature. */
+static void test_key_next(void)
+{
+    hg_ft_key key;
+    double w = 2000.0 * RPM;
+    CHECK(rebuilds(w, 0.8 * HG_FT_SPEED_DRIFT, 1, 40) == 3);
+    CHECK(rebuilds(w, 0.30, 0, 400) <= 1 + (int)ceil(0.30 / HG_FT_SPEED_DRIFT));
+    hg_ft_key_for(w, 36.0 / 13.0, 313.15, 4760.0, &key);
+    hg_ft_key_next(&key, 1, 1.01 * w, 36.0 / 13.0, 313.6, 9000.0);
+    CHECK(key.w_p == w && key.T_bath == 313.15 && key.W_max == 18000.0);
+}
+
 int main(void)
 {
     hg_gearset g;
@@ -76,6 +110,7 @@ int main(void)
     hg_friction_config cfg;
     char err[HG_ERRLEN] = "";
     int k, thermal;
+    test_key_next();
     CHECK(hg_gearset_load("resources/gearsets/gearset1.txt", &g, err, sizeof err) == 0);
     for (k = 0; k < 2; k++)
         for (thermal = 0; thermal < 2; thermal++) {
