@@ -15,5 +15,6 @@ LEVELS = {name: TABLE.normalize(values) for name, values in {
     "map": dict(mesh_model="rigid", friction_model="map"),
 }.items()}
 
-SOLVERS = {"bdf": dict(solver="cvode_bdf"), "adams": dict(solver="cvode_adams"),
-           "newmark": dict(solver="newmark")}
+SOLVERS = {"auto": dict(solver="auto"), "bdf": dict(solver="cvode_bdf"),
+           "adams": dict(solver="cvode_adams"), "newmark": dict(solver="newmark"),
+           "erk": dict(solver="arkode_erk")}

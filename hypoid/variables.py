@@ -11,7 +11,7 @@ from typing import NamedTuple
 
 MODEL_NAME = 'HypoidGearPair'
 MODEL_VERSION = '0.1.0'
-GUID = '{8a2aef15-dedb-543a-9bea-1de210019644}'
+GUID = '{9e9fdf0e-7558-5a1d-8e42-5a4bac5805b2}'
 
 
 class Variable(NamedTuple):
@@ -29,7 +29,7 @@ class Variable(NamedTuple):
     description: str
 
 
-ENUMERATIONS = {'load_mode': {'torque': 1, 'speed': 2}, 'mesh_model': {'mean': 1, 'varying': 2, 'rigid': 3}, 'backlash_model': {'exact': 1, 'smoothed': 2}, 'friction_model': {'none': 1, 'coulomb': 2, 'ehl_isothermal': 3, 'ehl_thermal': 4, 'map': 5}, 'hertz_model': {'exact': 1, 'approx': 2}, 'roelands_z': {'simple': 1, 'exact': 2}, 'shear_pressure': {'mean': 1, 'max': 2, 'hertz': 3}, 'relaxation': {'constant': 1, 'ttps': 2}, 'friction_preset': {'parameters': 1, 'paper': 2}, 'axle_losses': {'mesh': 1, 'full': 2}, 'thermal_model': {'fixed': 1, 'sump': 2}, 'solver': {'cvode_bdf': 1, 'cvode_adams': 2, 'newmark': 3, 'arkode_erk': 4}}
+ENUMERATIONS = {'load_mode': {'torque': 1, 'speed': 2}, 'mesh_model': {'mean': 1, 'varying': 2, 'rigid': 3}, 'backlash_model': {'exact': 1, 'smoothed': 2}, 'friction_model': {'none': 1, 'coulomb': 2, 'ehl_isothermal': 3, 'ehl_thermal': 4, 'map': 5}, 'hertz_model': {'exact': 1, 'approx': 2}, 'roelands_z': {'simple': 1, 'exact': 2}, 'shear_pressure': {'mean': 1, 'max': 2, 'hertz': 3}, 'relaxation': {'constant': 1, 'ttps': 2}, 'friction_preset': {'parameters': 1, 'paper': 2}, 'axle_losses': {'mesh': 1, 'full': 2}, 'thermal_model': {'fixed': 1, 'sump': 2}, 'solver': {'cvode_bdf': 1, 'cvode_adams': 2, 'newmark': 3, 'arkode_erk': 4, 'auto': 5}}
 
 DISPLAY_UNITS = {'m': {'um': (1000000.0, 0.0), 'mm': (1000.0, 0.0)}, 'rad/s': {'rpm': (9.549296585513721, 0.0)}, 'K': {'degC': (1.0, -273.15)}, 'N': {}, 'N.m': {}, 'W': {}, 'J': {}, 'Pa': {'GPa': (1e-09, 0.0), 'MPa': (1e-06, 0.0)}, 'Pa.s': {'mPa.s': (1000.0, 0.0)}, 'm/s': {}, 's': {}, 'Hz': {}, 'kg.m2': {}, 'rad': {'deg': (57.29577951308232, 0.0)}, 'm2': {}, 'm3': {'L': (1000.0, 0.0)}, 'J/K': {}, 'W/(m2.K)': {}, 'N/m': {}, 'N.s/m': {}, 'N.m/rad': {}, 'N.m.s/rad': {}, 'W/(m.K)': {}, 'J/(kg.K)': {}, 'kg/m3': {}}
 
@@ -133,7 +133,7 @@ _TABLE = (
     Variable(name='backlash_smoothing', vr=96, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='m', display_unit='um', start=2e-06, min=1e-09, max=0.0001, description='width over which the smoothed backlash rounds its corners (error at most half of it)'),
     Variable(name='efficiency_map_file', vr=97, causality='parameter', variability='fixed', type='String', enumeration=None, unit=None, display_unit=None, start='', min=None, max=None, description='efficiency map for friction_model = map (absolute, or relative to resources); empty: the built-in map of the gear set and lubricant'),
     Variable(name='friction_model', vr=98, causality='parameter', variability='fixed', type='Enumeration', enumeration='friction_model', unit=None, display_unit=None, start=4, min=1, max=5, description='flank friction model'),
-    Variable(name='solver', vr=99, causality='parameter', variability='fixed', type='Enumeration', enumeration='solver', unit=None, display_unit=None, start=1, min=1, max=4, description='internal integrator'),
+    Variable(name='solver', vr=99, causality='parameter', variability='fixed', type='Enumeration', enumeration='solver', unit=None, display_unit=None, start=5, min=1, max=5, description="internal integrator; auto picks the fidelity level's own (README, 'Fidelity levels and solvers')"),
     Variable(name='rtol', vr=100, causality='parameter', variability='fixed', type='Real', enumeration=None, unit=None, display_unit=None, start=1e-06, min=1e-12, max=0.1, description='relative tolerance of the integrator'),
     Variable(name='atol', vr=101, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='m', display_unit=None, start=1e-10, min=1e-16, max=0.0001, description="absolute tolerance on the DTE; the other states' tolerances are scaled from it (angles by 1/R_p, speeds by the highest natural frequency)"),
     Variable(name='max_step', vr=102, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='s', display_unit=None, start=0.0, min=0.0, max=1.0, description='largest internal step (for newmark an upper bound on its fixed step); 0 = automatic: 1/30 of a mesh period at the current speed for the compliant meshes with CVODE, unlimited for the rigid one and for arkode_erk'),

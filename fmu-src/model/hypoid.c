@@ -71,13 +71,14 @@ static int roots(double t, const double *y, double *g, void *user)
 }
 
 /* (Re)creates the integrator on the model's right-hand side and roots. */
-static int make_solver(hg_model *m, const hg_vars *v, char *err, size_t errlen)
+static int make_solver(hg_model *m, char *err, size_t errlen)
 {
     hg_solver_options opt;
-    opt.method = v->solver == HG_SOLVER_CVODE_ADAMS ? HG_METHOD_ADAMS
-                 : v->solver == HG_SOLVER_NEWMARK    ? HG_METHOD_NEWMARK
-                 : v->solver == HG_SOLVER_ARKODE_ERK ? HG_METHOD_ERK
-                                                     : HG_METHOD_BDF;
+    int solver = m->s.solver;
+    opt.method = solver == HG_SOLVER_CVODE_ADAMS ? HG_METHOD_ADAMS
+                 : solver == HG_SOLVER_NEWMARK    ? HG_METHOD_NEWMARK
+                 : solver == HG_SOLVER_ARKODE_ERK ? HG_METHOD_ERK
+                                                  : HG_METHOD_BDF;
     opt.rtol = m->s.rtol;
     opt.atol = m->s.atol;
     opt.max_steps = MAX_SOLVER_STEPS;
@@ -100,7 +101,7 @@ static void write_outputs(const hg_model *m, hg_vars *v)
  * torque reversal at 10 rpm on the rigid mesh, an extremes case). */
 static int wants_table(const hg_setup *s, const hg_vars *v)
 {
-    return v->friction_table && v->solver != HG_SOLVER_NEWMARK &&
+    return v->friction_table && s->solver != HG_SOLVER_NEWMARK &&
            hg_gearset_single_series(&s->gear) &&
            (v->friction_model == HG_FRICTION_MODEL_EHL_THERMAL ||
             v->friction_model == HG_FRICTION_MODEL_EHL_ISOTHERMAL);
@@ -157,7 +158,7 @@ int hg_model_setup(hg_model *m, hg_vars *v, double t0, char *err, size_t errlen)
         setup_table(m, v, err, errlen))
         return -1;
     hg_stepping_start(&m->rt, &m->s, v, t0);
-    if (make_solver(m, v, err, errlen)) return -1;
+    if (make_solver(m, err, errlen)) return -1;
     hg_logf(&m->log, "logEvents",
             "set-up: %s, i = %.4f, k_m0 = %.4g N/m, R_p0 = %.3f mm, modes %.1f / %.1f / %.1f Hz, "
             "dampers c_t1 = %.4g, c = %.4g, c_t2 = %.4g; eta_cycle holds 1 until the first window "

@@ -259,6 +259,17 @@ static void dynamics_params(hg_setup *s, const hg_vars *v)
     p->K_i = w_n * w_n * J;
 }
 
+/* The integrator of solver = auto, per fidelity level, chosen from the work-precision
+ * measurements (docs/work-precision.md): the explicit Runge-Kutta pair for the compliant meshes,
+ * whose steps the 1.7 kHz input-shaft mode bounds whatever the tolerance (BDF takes as many,
+ * each with a Newton iteration), BDF for the rigid one, whose long steps the explicit pair
+ * cannot take (its stability bound is that same mode). */
+static int solver_in_force(const hg_vars *v)
+{
+    if (v->solver != HG_SOLVER_AUTO) return v->solver;
+    return v->mesh_model == HG_MESH_MODEL_RIGID ? HG_SOLVER_CVODE_BDF : HG_SOLVER_ARKODE_ERK;
+}
+
 /* Absolute tolerances: atol is on the DTE [m]; angles scale by 1/R, speeds by omega_4/R. */
 static void tolerances(hg_setup *s, const hg_vars *v)
 {
@@ -276,8 +287,9 @@ static void tolerances(hg_setup *s, const hg_vars *v)
     t[HG_Y_T_OIL] = 1e-6; /* K */
     t[HG_Y_T_KM] = 1e-3;  /* N m */
     s->rtol = v->rtol;
-    s->fixed_step = v->solver == HG_SOLVER_NEWMARK;
-    s->explicit_rk = v->solver == HG_SOLVER_ARKODE_ERK;
+    s->solver = solver_in_force(v);
+    s->fixed_step = s->solver == HG_SOLVER_NEWMARK;
+    s->explicit_rk = s->solver == HG_SOLVER_ARKODE_ERK;
     s->max_step = v->max_step;
     s->f_max = v->f_4;
     s->steps_per_mesh = s->fixed_step ? v->steps_per_mesh_cycle : STEPS_PER_MESH;

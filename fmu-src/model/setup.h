@@ -19,6 +19,7 @@ typedef struct {
     hg_effmap map;        /* friction_model = map only */
     hg_heat_memo heat;    /* the housing heat's cache */
     hg_dyn_params p;      /* points into gear, lub, map and heat */
+    int solver;           /* HG_SOLVER_* in force (auto resolved) */
     double atol[HG_NY];
     double rtol;
     double max_step;      /* user's max_step, 0 = automatic */

@@ -14,7 +14,7 @@ tolerance atol omega_4 / R_p, which dominates at 10 rpm where the energies are t
 and must not crash or hang; a case the model cannot honour must end in fmi2Error with a message
 that says why (EXPECTED_ERRORS). Known bugs are xfail(strict=True) (KNOWN_BUGS).
 
-CI runs a representative subset (71 cases, about 10 s). The whole matrix (every
+CI runs a representative subset (125 cases, about 25 s). The whole matrix (every
 condition x every level x every solver):
 
     HG_EXTREMES=full .venv/bin/python -m pytest tests/python/test_extremes.py
@@ -123,8 +123,9 @@ KNOWN_BUGS = {  # (condition, level, solver) -> what goes wrong; none open now.
     # step is now at most 1/8 of that period.
 }
 
-# The CI subset: every condition with the full model and BDF, every level x solver in the
-# reversal (impacts, coast flank, input step) and at the longest communication step.
+# The CI subset: every condition with the full model, with the default solver (auto: arkode_erk)
+# and with BDF; every level x solver in the reversal (impacts, coast flank, input step) and at the
+# longest communication step.
 CI_LEVEL_SOLVER_CONDITIONS = ("reversal_100Nm_torque_mode", "comm_step_0.5s")
 CI_EXTRA = ("comm_step_0.5s_10rpm_cold-full-newmark", "coast_-1000Nm-isothermal-newmark",
             "backlash_0_rattle-smoothed-bdf", "cold_slow_idle-smoothed-adams",
@@ -143,7 +144,8 @@ def make_cases():
     for cond, (values, t_end, h, events) in CONDITIONS.items():
         for level in LEVELS:
             for solver in SOLVERS:
-                ci = ((level == "full" and solver == "bdf") or cond in CI_LEVEL_SOLVER_CONDITIONS
+                ci = ((level == "full" and solver in ("auto", "bdf"))
+                      or cond in CI_LEVEL_SOLVER_CONDITIONS
                       or f"{cond}-{level}-{solver}" in CI_EXTRA)
                 if not (FULL or ci):
                     continue
