@@ -98,6 +98,15 @@ static int load_lubricant(hg_setup *s, const char *resource_dir, const hg_vars *
     if (resolve(&f, resource_dir, err, errlen)) return -1;
     if (hg_lubricant_load(f.path, &s->lub, why, sizeof why))
         return load_failed(&f, why, err, errlen);
+    /* the override has the file's lower bound: below it the film's thermal resistance
+     * h_c / (2 k_f A) (eq. 18) overflows (a denormal k_f stalls the integrator) */
+    if (v->k_f > 0.0 && v->k_f < HG_LUBRICANT_K_F_MIN) {
+        hg_errorf(err, errlen,
+                  "k_f = %g W/(m.K) is below %g W/(m.K), the lowest a lubricant file may give "
+                  "(0 uses the file's value)",
+                  v->k_f, HG_LUBRICANT_K_F_MIN);
+        return -1;
+    }
     return 0;
 }
 

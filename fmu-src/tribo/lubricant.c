@@ -27,7 +27,7 @@
 #define HNA_HI 1.0
 #define HNB_LO 1e-3
 #define HNB_HI 10.0
-#define KF_LO 0.01
+#define KF_LO HG_LUBRICANT_K_F_MIN
 #define KF_HI 10.0
 #define CP_LO 100.0
 #define CP_HI 1e5

@@ -6,6 +6,7 @@
 #include <stddef.h>
 
 #define HG_LUBRICANT_NAME_LEN 80
+#define HG_LUBRICANT_K_F_MIN 0.01 /* lowest thermal conductivity a file may give [W/(m K)] */
 
 typedef struct {
     char name[HG_LUBRICANT_NAME_LEN]; /* human-readable name */

@@ -137,6 +137,15 @@ def test_bad_real_values_are_rejected_with_the_name_and_value(harness, name, val
     expect_error(h, lambda: h.set(**{name: value}), *words)
 
 
+@pytest.mark.parametrize("value,text", [(5e-324, "4.94066e-324"), (1e-3, "0.001")])
+def test_k_f_below_a_lubricant_files_lowest_is_refused_at_initialisation(harness, value, text):
+    """0 takes the file's k_f; a positive override below 0.01 W/(m.K) (the file's own lower
+    bound) is refused when the model is set up: a denormal one made the film's thermal
+    resistance overflow and the integrator crawl."""
+    h = harness()
+    expect_error(h, lambda: h.init(k_f=value), f"k_f = {text} W/(m.K) is below 0.01")
+
+
 def test_nan_input_during_the_run_is_rejected(harness):
     h = harness().init()
     expect_error(h, lambda: h.set(T_s=float("nan")), "T_s", "nan")
