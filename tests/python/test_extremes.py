@@ -117,7 +117,10 @@ EXPECTED_ERRORS = {
 }
 
 # Known bugs (reported, not fixed here): (condition regex, level regex, solver regex) -> reason.
-KNOWN_BUGS = {  # (condition, level, solver) -> what goes wrong; none open now.
+KNOWN_BUGS = {  # (condition, level, solver) -> what goes wrong (the whole matrix only).
+    ("comm_step_0.5s_10000rpm_reversal", "isothermal", "newmark"):
+        "Newmark's Newton iteration fails at the reversal at 10 000 rpm (step 9.4 us); the "
+        "variable-step solvers run it",
     # Fixed: rigid + ehl_thermal, Newmark, 10 rpm torque reversal broke the energy audit because
     # the automatic fixed step (1 ms at low speed) exceeded the highest mode's period; the fixed
     # step is now at most 1/8 of that period.
