@@ -5,8 +5,8 @@ grids, continuation sweeps through the resonances, tables, plots and a report in
     hypoid study full --out results-full   # the paper-size grid plus sensitivity runs
     hypoid study ci --out /tmp/ci          # a seconds-long smoke version
 
-Options: --scheduler ADDRESS (a dask.distributed scheduler; default a local cluster of
---workers processes, 2), --fmu PATH. A re-run into the same --out resumes.
+Options: --scheduler ADDRESS (a dask.distributed scheduler; default a pool of --workers local
+processes, 2), --fmu PATH. A re-run into the same --out resumes.
 """
 
 import json
@@ -171,7 +171,7 @@ def run(name, out, fmu_path, scheduler=None, workers=2):
     wall = time.time() - t0
     lm.to_csv(out / "lossmap.csv", index=False)
     info = {"study": name, "fmu": str(fmu_path), "fmu_sha256": fmu.sha,
-            "scheduler": scheduler or f"local cluster, {workers} workers x 1 thread"
+            "scheduler": scheduler or f"local pool, {workers} processes"
             if workers else "in-process", "cluster_start_s": t1 - t0, "wall_s": wall,
             "n_points": len(pts), "n_sweeps": len(sweeps), "n_sweep_rows": len(cont),
             "settings": spec.settings.as_dict(), "ramp_time_s": spec.ramp_time,

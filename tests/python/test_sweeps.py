@@ -4,6 +4,7 @@ the dask path, error rows, and the swapped-alpha* lubricant file."""
 
 import copy
 import math
+import os
 
 import numpy as np
 import pandas as pd
@@ -151,16 +152,24 @@ def test_failed_point_is_a_row_and_the_next_point_still_runs(tmp_path, fmu_path)
     assert len(sweep.PointsPlan(pts, tmp_path, fmu, QUICK).tasks) == 1  # failures are retried
 
 
-def test_dask_local_cluster_matches_the_serial_run(tmp_path, fmu_path):
+def test_local_pool_and_a_dask_scheduler_match_the_serial_run(tmp_path, fmu_path):
+    from dask.distributed import LocalCluster
+
     pts = sweep.complete(sweep.grid({"T_s": 50}, {"speed_rpm": [1500, 2500, 3500, 4500]}))
     fmu = parallel.FmuRef(fmu_path)
-    serial = sweep.run_points(pts, tmp_path / "serial", fmu, None, QUICK)
-    with parallel.executor(workers=2) as client:
-        dist = sweep.run_points(pts, tmp_path / "dask", fmu, client, QUICK)
-    assert (dist["status"] == "ok").all()
-    assert dist["worker_pid"].nunique() <= 2  # one reused instance per worker process
-    for k in OUTS:
-        np.testing.assert_array_equal(dist[k].to_numpy(), serial[k].to_numpy(), err_msg=k)
+    serial = sweep.run_points(pts, tmp_path / "serial", fmu, None, QUICK)  # instance here too
+    with parallel.executor(workers=2) as pool:
+        assert isinstance(pool, parallel.LocalPool)
+        local = sweep.run_points(pts, tmp_path / "local", fmu, pool, QUICK)
+    with LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None) as cluster:
+        with parallel.executor(cluster.scheduler_address) as client:
+            dist = sweep.run_points(pts, tmp_path / "dask", fmu, client, QUICK)
+    for df in (local, dist):
+        assert (df["status"] == "ok").all()
+        assert df["worker_pid"].nunique() <= 2  # one reused instance per worker process
+        assert os.getpid() not in set(df["worker_pid"])
+        for k in OUTS:
+            np.testing.assert_array_equal(df[k].to_numpy(), serial[k].to_numpy(), err_msg=k)
 
 
 def test_table_widens_its_header_for_new_columns(tmp_path):
