@@ -118,6 +118,10 @@ EXPECTED_ERRORS = {
 
 # Known bugs (reported, not fixed here): (condition regex, level regex, solver regex) -> reason.
 KNOWN_BUGS = {  # (condition, level, solver) -> what goes wrong (the whole matrix only).
+    ("reversal_100Nm_10rpm", "full|smoothed|mean", "auto|erk"):
+        "energy balance off by 3-4x its bound since edc7732 (the friction table's key following "
+        "an oscillating speed): arkode_erk through the 10 rpm reversal, at rtol 1e-6 and 1e-7; "
+        "with friction_table = false, and with BDF, it closes",
     ("comm_step_0.5s_10000rpm_reversal", "isothermal", "newmark"):
         "Newmark's Newton iteration fails at the reversal at 10 000 rpm (step 9.4 us); the "
         "variable-step solvers run it",
