@@ -22,16 +22,6 @@ SWAPPED_NAME = "OS265963 with alpha* of OS265962"
 SWAPPED_FILE = "OS265963-alpha-OS265962.txt"
 
 
-# FMU parameters every point and sweep of a study sets (a point's own values win). The direct
-# friction solve instead of the friction table: near the resonances, where the teeth separate,
-# the pinion speed swings more than 2 % and the impact loads pass the table's range every few
-# mesh cycles, so the FMU rebuilt its table hundreds of times per point (486 builds, 5.4 s CPU at
-# gear set 1, 1200 rpm, 100 N.m; 0.37 s without the table): ~80 % of the default study's CPU.
-# Elsewhere the table saves 0-30 %. The results move by the table's error (eta <= 4e-8, DTE p-p
-# <= 0.07 um at the probed points; docs/studies.md has the whole study's comparison).
-STUDY_PARAMS = {"friction_table": False}
-
-
 def _rng(a, b, s):
     return list(range(a, b + 1, s))
 
@@ -49,7 +39,6 @@ class Spec:
     sweep_sets: list = field(default_factory=lambda: [1])
     extra: list = field(default_factory=list)  # (label, base params, {name: values}) grids
     settings: steady.Settings = field(default_factory=steady.Settings)
-    params: dict = field(default_factory=lambda: dict(STUDY_PARAMS))  # set at every point
     ramp_time: float = 0.1
     # the axle's loss map (hypoid.lossmap): oil temperatures in degC x speeds x torques
     loss_temps: list = field(default_factory=lambda: [40.0, 80.0])
@@ -126,11 +115,6 @@ def points_of(spec, swapped_file):
     return pts
 
 
-def with_params(spec, points):
-    """The points with the study's fixed FMU parameters wherever a point does not set its own."""
-    return [{**spec.params, **p} for p in points]
-
-
 def unique(points):
     from hypoid import results
 
@@ -149,15 +133,13 @@ def run(name, out, fmu_path, scheduler=None, workers=2):
     fmu = parallel.FmuRef(fmu_path)
     swapped = swapped_lubricant(out)
     extra_cols = sorted({k for _, base, _ in spec.extra for k in base})
-    points = unique(sweep.complete(with_params(spec, points_of(spec, swapped)), extra_cols))
-    traced = sweep.complete(with_params(spec, [{"gear_set": 1, "lubricant": 1, "T_s": t,
-                                                 SPEED_KEY: n} for t, n in spec.trace_points]),
-                            extra_cols)
+    points = unique(sweep.complete(points_of(spec, swapped), extra_cols))
+    traced = sweep.complete([{"gear_set": 1, "lubricant": 1, "T_s": t, SPEED_KEY: n}
+                             for t, n in spec.trace_points], extra_cols)
     sweeps = [({k: v for k, v in p.items() if k != SPEED_KEY}, spec.sweep_speeds)
-              for p in sweep.complete(with_params(spec, [{"gear_set": s, "lubricant": 1, "T_s": t}
-                                                         for s in spec.sweep_sets
-                                                         for t in spec.sweep_torques]),
-                                      extra_cols)]
+              for p in sweep.complete([{"gear_set": s, "lubricant": 1, "T_s": t}
+                                       for s in spec.sweep_sets
+                                       for t in spec.sweep_torques], extra_cols)]
     loss_plan = lossmap.Plan(spec.loss_temps, spec.loss_speeds, spec.loss_torques)
     t0 = time.time()
     with parallel.executor(scheduler, workers) as client:
@@ -175,7 +157,6 @@ def run(name, out, fmu_path, scheduler=None, workers=2):
             if workers else "in-process", "cluster_start_s": t1 - t0, "wall_s": wall,
             "n_points": len(pts), "n_sweeps": len(sweeps), "n_sweep_rows": len(cont),
             "settings": spec.settings.as_dict(), "ramp_time_s": spec.ramp_time,
-            "params": spec.params,
             "swapped_lubricant_file": swapped,
             "extra": [(label, base) for label, base, _ in spec.extra],
             "lossmap": "lossmap.csv", "lossmap_points": len(lm),

@@ -197,15 +197,3 @@ def test_swapped_alpha_lubricant_file(tmp_path):
     builtin = lubricant.render(lubricant.build(name="OS265963", **lubricant.BUILTIN["OS265963"]),
                                lubricant.BUILTIN_NOTES["OS265963"])
     assert builtin == (sweep.pathlib.Path(lubricant.builtin_dir()) / "OS265963.txt").read_text()
-
-
-# ---------------------------------------------------------------------------- study points
-def test_study_points_and_sweeps_carry_the_study_params(tmp_path):
-    """Spec.params (friction_table = false, docs/studies.md) reach every point (study.run gives
-    the traced points and the sweeps the same with_params); a point's own value wins."""
-    spec = study.SPECS["ci"]
-    assert spec.params == study.STUDY_PARAMS == {"friction_table": False}
-    pts = study.with_params(spec, study.points_of(spec, study.swapped_lubricant(tmp_path)))
-    assert pts and all(p["friction_table"] is False for p in pts)
-    mine = study.with_params(spec, [{"T_s": 50, "friction_table": True}])
-    assert mine == [{"friction_table": True, "T_s": 50}]
