@@ -119,6 +119,21 @@ class LocalPool:
         self.pool.shutdown(wait=True, cancel_futures=True)
 
 
+def call_all(calls, workers=2):
+    """[fn()] of argument-free picklable callables, on `workers` local processes (0: here)."""
+    if workers == 0:
+        return [fn() for fn in calls]
+    pool = LocalPool(workers)
+    try:
+        return list(pool.pool.map(_call, calls))
+    finally:
+        pool.close()
+
+
+def _call(fn):
+    return fn()
+
+
 @contextlib.contextmanager
 def executor(scheduler=None, workers=2):
     """A LocalPool of `workers` processes, a dask Client of `scheduler`, or None for in-process

@@ -348,21 +348,24 @@ def axle_loss_map(lm, out, name="axle_loss_map"):
     return _save(fig, out, name)
 
 
-def all_figures(pts, cont, out, lossmap=None):
-    """Every study figure the tables allow; returns {name: path}."""
+def all_figures(pts, cont, out, lossmap=None, workers=0):
+    """Every study figure the tables allow, drawn on `workers` local processes (0: here);
+    returns {name: path}."""
+    from functools import partial
+
+    from hypoid import parallel
+
     out = pathlib.Path(out)
-    made = {
-        "fig5": fig5_regime(pts, out),
-        "fig6a": fig6_lubricants(pts, out),
-        "fig7": fig7_swapped(pts, out),
-        "fig8": fig8_torque(pts, out),
-        "fig9": fig9_jump(cont, pts, out) if not cont.empty else None,
-        "fig10": fig10_mesh_cycle(pts, out),
-        "fig11": fig11_gear_sets(pts, out),
-        "lossmap": axle_loss_map(lossmap, out),
-    }
+    jobs = {"fig5": partial(fig5_regime, pts, out), "fig6a": partial(fig6_lubricants, pts, out),
+            "fig7": partial(fig7_swapped, pts, out), "fig8": partial(fig8_torque, pts, out),
+            "fig9": partial(fig9_jump, cont, pts, out) if not cont.empty else None,
+            "fig10": partial(fig10_mesh_cycle, pts, out),
+            "fig11": partial(fig11_gear_sets, pts, out),
+            "lossmap": partial(axle_loss_map, lossmap, out)}
+    jobs = {name: job for name, job in jobs.items() if job is not None}
     for e0 in tb.calibration_probes(pts):
-        made[f"fig8-e0x{e0:g}"] = fig8_torque(
-            pts, out, f"fig8_efficiency_torque_e0x{e0:g}",
+        jobs[f"fig8-e0x{e0:g}"] = partial(
+            fig8_torque, pts, out, f"fig8_efficiency_torque_e0x{e0:g}",
             f"calibration probe: transmission error e_0 x {e0:g} (e_0_scale)", e_0_scale=e0)
+    made = dict(zip(jobs, parallel.call_all(list(jobs.values()), workers)))
     return {k: v for k, v in made.items() if v is not None}

@@ -165,8 +165,9 @@ def run(name, out, fmu_path, scheduler=None, workers=2):
     return pts, cont, info
 
 
-def write_report(out, pts, cont, info):
-    """Results -> figures, findings and modal tables -> report.md (each by its own module)."""
+def write_report(out, pts, cont, info, workers=2):
+    """Results -> figures (drawn on `workers` local processes), findings and modal tables ->
+    report.md (each by its own module)."""
     from hypoid import findings, plots, report, tables
 
     import pandas as pd
@@ -174,7 +175,7 @@ def write_report(out, pts, cont, info):
     ok_pts, ok_cont = tables.prepare(pts), tables.prepare(cont)
     lm_path = out / info.get("lossmap", "lossmap.csv")
     lm = pd.read_csv(lm_path) if lm_path.exists() else None
-    figs = plots.all_figures(ok_pts, ok_cont, out / "figures", lm)
+    figs = plots.all_figures(ok_pts, ok_cont, out / "figures", lm, workers)
     find = findings.all_findings(pts, cont, out / "traces")
     find.to_csv(out / "findings.csv", index=False)
     modal = tables.modal_table(ok_pts)
@@ -199,7 +200,7 @@ def main(argv):
     (out / "study.json").write_text(json.dumps(info, indent=2) + "\n")
     if not args.no_report:
         t0 = time.time()
-        path = write_report(out, pts, cont, info)
+        path = write_report(out, pts, cont, info, args.workers)
         info["report_s"] = time.time() - t0
         (out / "study.json").write_text(json.dumps(info, indent=2) + "\n")
         print(f"hypoid study: report {path}")

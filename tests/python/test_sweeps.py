@@ -3,6 +3,7 @@ reuse through fmi2Reset, steady-state detection, window sampling, resume after a
 the dask path, error rows, and the swapped-alpha* lubricant file."""
 
 import copy
+import functools
 import math
 import os
 
@@ -170,6 +171,14 @@ def test_local_pool_and_a_dask_scheduler_match_the_serial_run(tmp_path, fmu_path
         assert os.getpid() not in set(df["worker_pid"])
         for k in OUTS:
             np.testing.assert_array_equal(df[k].to_numpy(), serial[k].to_numpy(), err_msg=k)
+
+
+def test_call_all_runs_the_calls_in_order_on_other_processes_or_here():
+    calls = [functools.partial(divmod, n, 7) for n in range(5)] + [os.getpid]
+    here = parallel.call_all(calls, workers=0)
+    there = parallel.call_all(calls, workers=2)
+    assert here[:-1] == there[:-1] == [divmod(n, 7) for n in range(5)]
+    assert here[-1] == os.getpid() != there[-1]
 
 
 def test_table_widens_its_header_for_new_columns(tmp_path):
