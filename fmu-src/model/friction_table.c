@@ -12,6 +12,7 @@
 #define FD_T 0.1         /* step of the temperature derivative [K] */
 #define LN_W_SPAN -6.907755278982137 /* ln(1e-3): the load range is [W_max / 1000, W_max] */
 #define MU_FLOOR 1e-12   /* mu of pairs the friction model leaves without friction */
+#define DRIFT_HOLD 2.0   /* the drift terms are held beyond this many windows of the key */
 
 void hg_ft_key_for(double w_p, double ratio, double T_bath, double W_t, hg_ft_key *key)
 {
@@ -22,9 +23,15 @@ void hg_ft_key_for(double w_p, double ratio, double T_bath, double W_t, hg_ft_ke
     key->w_dir = 0.0;
 }
 
+/* The speed window of a key speed [rad/s]: relative, with an absolute floor. */
+static double speed_window(double key_w)
+{
+    return HG_FT_SPEED_DRIFT * fmax(fabs(key_w), SPEED_FLOOR);
+}
+
 static int speed_covers(double key_w_p, double w_p)
 {
-    return fabs(w_p - key_w_p) <= HG_FT_SPEED_DRIFT * fmax(fabs(key_w_p), SPEED_FLOOR);
+    return fabs(w_p - key_w_p) <= speed_window(key_w_p);
 }
 
 static int temperature_covers(double key_T, double T_bath)
@@ -168,13 +175,22 @@ static double interpolate(const double a[HG_FT_N_PSI][HG_FT_N_L], const stencil 
     return v;
 }
 
+/* The drift d of the operating point from the key, held at +-DRIFT_HOLD windows. */
+static double held(double d, double window)
+{
+    double lim = DRIFT_HOLD * window;
+    return fmax(-lim, fmin(d, lim));
+}
+
 double hg_friction_table_F(const hg_friction_table *t, double psi, double W, double w_p,
                            double w_g, double T_bath)
 {
+    const hg_ft_key *k = &t->key;
     stencil st;
     if (W < HG_EHL_LOAD_MIN) return 0.0;
-    make_stencil(psi, W, t->key.W_max, &st);
-    return W * exp(interpolate(t->L, &st) + interpolate(t->dL_wp, &st) * (w_p - t->key.w_p) +
-                   interpolate(t->dL_wg, &st) * (w_g - t->key.w_g) +
-                   interpolate(t->dL_T, &st) * (T_bath - t->key.T_bath));
+    make_stencil(psi, W, k->W_max, &st);
+    return W * exp(interpolate(t->L, &st) +
+                   interpolate(t->dL_wp, &st) * held(w_p - k->w_p, speed_window(k->w_p)) +
+                   interpolate(t->dL_wg, &st) * held(w_g - k->w_g, speed_window(k->w_g)) +
+                   interpolate(t->dL_T, &st) * held(T_bath - k->T_bath, HG_FT_T_DRIFT));
 }

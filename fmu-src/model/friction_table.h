@@ -73,7 +73,10 @@ void hg_ft_key_next(hg_ft_key *key, int valid, double w_p, double ratio, double 
 void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg,
                              const hg_gearset *g, const hg_ft_key *key);
 
-/* F_f [N] of a pair at phase psi carrying W at speeds w_p, w_g and bath temperature T_bath. */
+/* F_f [N] of a pair at phase psi carrying W at speeds w_p, w_g and bath temperature T_bath; the
+ * drifts from the key enter up to twice the rebuild window (speeds relative to at least 1 rad/s,
+ * temperature HG_FT_T_DRIFT) and are held beyond, so that mu stays bounded when the operating
+ * point leaves the window within a step. */
 double hg_friction_table_F(const hg_friction_table *t, double psi, double W, double w_p,
                            double w_g, double T_bath);
 

@@ -103,6 +103,26 @@ static void test_key_next(void)
     CHECK(key.w_p == w && key.T_bath == 313.15 && key.W_max == 18000.0);
 }
 
+/* Beyond twice its window the table holds its drift terms: built at 0.3 rpm (the 10 rpm torque
+ * reversal's standstill), where ln mu rises by ~23 per rad/s, an unheld extrapolation to
+ * 0.8 rad/s (the speed that step reached) gave mu ~ 3e5, a friction so stiff that arkode_erk's
+ * energy audit missed its bound; held, F there is F at the edge, a friction coefficient. */
+static void test_drift_held(const hg_friction_config *cfg, const hg_gearset *g)
+{
+    static hg_friction_table t;
+    hg_ft_key key;
+    double ratio = (double)g->N_g / g->N_p, w = 0.3 * RPM, W = 3000.0, F_far, F_edge;
+    double edge = 2.0 * HG_FT_SPEED_DRIFT; /* two windows: both speeds are below the 1 rad/s floor */
+    hg_ft_key_for(w, ratio, 313.15, 4760.0, &key);
+    hg_friction_table_build(&t, cfg, g, &key);
+    F_far = hg_friction_table_F(&t, 1.0, W, 0.8, 0.8 / ratio, 313.15 + 30.0);
+    F_edge = hg_friction_table_F(&t, 1.0, W, w + edge, w / ratio + edge,
+                                 313.15 + 2.0 * HG_FT_T_DRIFT);
+    CHECK(F_far == F_edge);
+    CHECK(F_far > 0.0 && F_far < 0.2 * W);
+    CHECK(hg_friction_table_F(&t, 1.0, W, -0.8, -0.8 / ratio, 313.15) > 0.0);
+}
+
 int main(void)
 {
     hg_gearset g;
@@ -120,6 +140,7 @@ int main(void)
             hg_ehl_params_default(&cfg.ehl);
             cfg.ehl.thermal = thermal;
             cfg.lub = &oil[k];
+            if (k == 0 && thermal) test_drift_held(&cfg, &g);
             e1 = worst_error(&cfg, &g, 2000.0, 313.15, 4760.0); /* the design point */
             e2 = worst_error(&cfg, &g, 500.0, 253.15, 9000.0);  /* slow, cold, loaded */
             e3 = worst_error(&cfg, &g, 4000.0, 373.15, 1500.0); /* fast, hot, light */
