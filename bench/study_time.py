@@ -11,6 +11,7 @@ a table and writes bench/study_time.json (--json).
 
 import argparse
 import json
+import os
 import pathlib
 import resource
 import statistics
@@ -32,13 +33,15 @@ def children_cpu():
 def one_run(args, out):
     cmd = [str(ROOT / ".venv/bin/hypoid"), "study", args.study, "--fmu", args.fmu, "--out",
            str(out), "--workers", str(args.workers)]
-    wall, cpu = time.perf_counter(), children_cpu()
+    wall, cpu, load = time.perf_counter(), children_cpu(), os.getloadavg()[0]
     done = subprocess.run(cmd, capture_output=True, text=True)
     wall, cpu = time.perf_counter() - wall, children_cpu() - cpu
     if done.returncode != 0:
         sys.exit(f"study_time: {' '.join(cmd)} failed ({done.returncode}): "
                  f"{done.stderr.strip().splitlines()[-1:]}")
-    return {"wall_s": wall, "cpu_s": cpu, **parts(out)}
+    # the load average (1 min) before and after: wall times mean little on shared cores
+    return {"wall_s": wall, "cpu_s": cpu, "load_before": load, "load_after": os.getloadavg()[0],
+            **parts(out)}
 
 
 def parts(out):
@@ -74,8 +77,8 @@ def main():
     runs = []
     for k in range(args.runs):
         runs.append(one_run(args, root / f"run{k}"))
-        print(f"run {k}: {runs[-1]['wall_s']:.1f} s wall, {runs[-1]['cpu_s']:.1f} s CPU",
-              flush=True)
+        print(f"run {k}: {runs[-1]['wall_s']:.1f} s wall, {runs[-1]['cpu_s']:.1f} s CPU (load "
+              f"{runs[-1]['load_before']:.1f} -> {runs[-1]['load_after']:.1f})", flush=True)
     med = {key: statistics.median(r[key] for r in runs)
            for key in ("wall_s", "cpu_s", "cluster_start_s", "tasks_wall_s", "report_s",
                        "points_cpu_s", "lossmap_cpu_s")}
