@@ -7,7 +7,6 @@
 #define TWO_PI 6.283185307179586
 #define W_FLOOR 1000.0   /* smallest W_max [N] */
 #define LOAD_LOW 0.0625  /* rebuild when W_t falls below this fraction of W_max */
-#define SPEED_FLOOR 1.0  /* [rad/s]: speed drifts are relative to at least this */
 #define FD_SPEED 2e-3    /* relative step of the speed derivatives */
 #define FD_T 0.1         /* step of the temperature derivative [K] */
 #define LN_W_SPAN -6.907755278982137 /* ln(1e-3): the load range is [W_max / 1000, W_max] */
@@ -26,7 +25,7 @@ void hg_ft_key_for(double w_p, double ratio, double T_bath, double W_t, hg_ft_ke
 /* The speed window of a key speed [rad/s]: relative, with an absolute floor. */
 static double speed_window(double key_w)
 {
-    return HG_FT_SPEED_DRIFT * fmax(fabs(key_w), SPEED_FLOOR);
+    return HG_FT_SPEED_DRIFT * fmax(fabs(key_w), HG_FT_SPEED_MIN);
 }
 
 static int speed_covers(double key_w_p, double w_p)
@@ -44,6 +43,11 @@ static int load_covers(double W_max, double W_t)
     double W = fabs(W_t);
     if (W > HG_FT_LOAD_FILL * W_max) return 0;
     return W >= LOAD_LOW * W_max || W_max <= W_FLOOR;
+}
+
+int hg_ft_speed_tabulated(double w_p)
+{
+    return fabs(w_p) >= HG_FT_SPEED_MIN;
 }
 
 int hg_ft_key_covers(const hg_ft_key *key, double w_p, double T_bath, double W_t)
@@ -90,8 +94,8 @@ static double ln_mu(const hg_friction_config *cfg, const hg_pair_point *pt, doub
 void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg,
                              const hg_gearset *g, const hg_ft_key *key)
 {
-    double dw_p = FD_SPEED * fmax(fabs(key->w_p), SPEED_FLOOR);
-    double dw_g = FD_SPEED * fmax(fabs(key->w_g), SPEED_FLOOR);
+    double dw_p = FD_SPEED * fmax(fabs(key->w_p), HG_FT_SPEED_MIN);
+    double dw_g = FD_SPEED * fmax(fabs(key->w_g), HG_FT_SPEED_MIN);
     double w_p = key->w_p, w_g = key->w_g, T = key->T_bath;
     int i, j;
     t->key = *key;

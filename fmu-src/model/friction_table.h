@@ -46,12 +46,20 @@ typedef struct {
  * pair's friction against 1.1e-3 at 2 %), and a resonance's speed swing (+-2.5 % at 1200 rpm,
  * 300 N m) fits one table. */
 #define HG_FT_SPEED_DRIFT 0.04
+/* [rad/s] Speed windows are relative to at least this, and below it the table is not used:
+ * there the window is a growing fraction of the speed and ln mu, which drops to the film's
+ * limit at standstill, is far from linear in it (F_f at a pair load of 3 kN: 1 N at rest, 27 N
+ * at 0.1 rad/s, 36 N at 0.3 rad/s), so the direct solve runs. */
+#define HG_FT_SPEED_MIN 1.0
 #define HG_FT_T_DRIFT 1.0
 #define HG_FT_LOAD_FILL 0.7
 
 /* The key for an operating point: pinion speed w_p and the gear's kinematic speed w_p / ratio,
  * bath temperature, loads up to twice W_t. */
 void hg_ft_key_for(double w_p, double ratio, double T_bath, double W_t, hg_ft_key *key);
+
+/* Whether the table serves the pinion speed w_p [rad/s] at all (|w_p| >= HG_FT_SPEED_MIN). */
+int hg_ft_speed_tabulated(double w_p);
 
 /* Whether the table built for key still serves the operating point (w_p, T_bath, W_t). */
 int hg_ft_key_covers(const hg_ft_key *key, double w_p, double T_bath, double W_t);
@@ -74,8 +82,8 @@ void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg
                              const hg_gearset *g, const hg_ft_key *key);
 
 /* F_f [N] of a pair at phase psi carrying W at speeds w_p, w_g and bath temperature T_bath; the
- * drifts from the key enter up to twice the rebuild window (speeds relative to at least 1 rad/s,
- * temperature HG_FT_T_DRIFT) and are held beyond, so that mu stays bounded when the operating
+ * drifts from the key enter up to twice the rebuild window (speeds relative to at least
+ * HG_FT_SPEED_MIN, temperature HG_FT_T_DRIFT) and are held beyond, so that mu stays bounded when the operating
  * point leaves the window within a step. */
 double hg_friction_table_F(const hg_friction_table *t, double psi, double W, double w_p,
                            double w_g, double T_bath);

@@ -124,15 +124,22 @@ static int setup_table(hg_model *m, const hg_vars *v, char *err, size_t errlen)
 }
 
 /* Keeps the table on the operating point at the start of a step: speed, oil temperature and a
- * load estimate (input torque over the mean radius, or the mean spring force). The key lives in
- * the runtime, so a restored state rebuilds the very table it was run with; a new table restarts
- * the integrator, whose history saw the old one. */
+ * load estimate (input torque over the mean radius, or the mean spring force); near standstill
+ * the direct solve instead (hg_ft_speed_tabulated). The key lives in the runtime, so a restored
+ * state rebuilds the very table it was run with; a new table, or a switch between table and
+ * direct solve, restarts the integrator, whose history saw the old right-hand side. */
 static void update_table(hg_model *m, const hg_inputs *u)
 {
     hg_runtime *rt = &m->rt;
     hg_dyn_params *p = &m->s.p;
+    const hg_friction_table *before = p->table;
     double w_p = rt->y[HG_Y_W_P], T_oil = hg_dyn_oil_temperature(p, u, rt->y), W;
     if (!m->table) return;
+    if (!hg_ft_speed_tabulated(w_p)) {
+        p->table = NULL;
+        if (before) rt->restart = 1;
+        return;
+    }
     W = fmax(fabs(u->T_s) / p->R_p0,
              p->k_m0 * fabs(hg_backlash_f(&p->backlash, rt->y[HG_Y_X], rt->mode)));
     if (!rt->ft_valid || !hg_ft_key_covers(&rt->ft_key, w_p, T_oil, W)) {
@@ -147,6 +154,7 @@ static void update_table(hg_model *m, const hg_inputs *u)
                 rt->ft_key.T_bath - 273.15, rt->ft_key.W_max);
     }
     p->table = m->table->usable ? m->table : NULL;
+    if (p->table != before) rt->restart = 1;
 }
 
 /* ------------------------------------------------------------------ set-up */
