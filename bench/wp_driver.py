@@ -51,15 +51,19 @@ ATOL_PER_RTOL = 1e-4  # atol [m of DTE] = 1e-4 m * rtol: rtol relative to a DTE 
 
 @dataclass(frozen=True)
 class Setting:
-    solver: str          # bdf | adams | newmark | bdf_free | adams_free (max_step = 1 s)
-    value: float         # rtol (bdf, adams) or steps per mesh cycle (newmark)
+    solver: str          # bdf | adams | erk | newmark | bdf_free | adams_free (max_step = 1 s)
+    #                      | default (the FMU's own: solver = auto, its rtol and atol)
+    value: float         # rtol (bdf, adams, erk; default: the FMU's, 1e-6) or steps per mesh
+    #                      cycle (newmark)
 
     @property
     def start(self):
+        if self.solver == "default":
+            return {}
         if self.solver == "newmark":
             return dict(solver="newmark", steps_per_mesh_cycle=int(self.value))
-        out = dict(solver="cvode_bdf" if self.solver.startswith("bdf") else "cvode_adams",
-                   rtol=self.value,
+        name = {"bdf": "cvode_bdf", "adams": "cvode_adams", "erk": "arkode_erk"}
+        out = dict(solver=name[self.solver.replace("_free", "")], rtol=self.value,
                    atol=ATOL_PER_RTOL * self.value)
         if self.solver.endswith("_free"):
             out["max_step"] = 1.0
@@ -67,6 +71,8 @@ class Setting:
 
     @property
     def label(self):
+        if self.solver == "default":
+            return "default (auto)"
         if self.solver == "newmark":
             return f"newmark {int(self.value)}/cycle"
         name = self.solver.replace("_free", "")
@@ -74,6 +80,7 @@ class Setting:
         return f"{name} rtol {self.value:.0e}{free}"
 
 
+DEFAULT = Setting("default", 1e-6)
 REFERENCE = Setting("bdf", 1e-10)
 CONFIRM = Setting("adams", 1e-10)
 
