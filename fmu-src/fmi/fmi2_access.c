@@ -52,7 +52,8 @@ static fmi2Status get_values(hg_instance *c, const char *fn, hg_base_type type,
     if (prepare_get(c, fn, vr, nvr, values) != fmi2OK) return fmi2Error;
     for (i = 0; i < nvr; i++) {
         const hg_var_info *info = hg_lookup(c, fn, vr[i], type);
-        if (!info) return fmi2Error;
+        if (!info || (info->causality == HG_OUTPUT && hg_instance_output(c, fn, info) != fmi2OK))
+            return fmi2Error;
         memcpy((char *)values + i * size, hg_var_cptr(&c->vars, info), size);
     }
     return fmi2OK;

@@ -111,38 +111,30 @@ static int check_step(hg_instance *c, const char *fn, double t, double h)
     return 0;
 }
 
-/* A failed step: the instance goes to the error state with the last good outputs readable. */
-static fmi2Status step_failed(hg_instance *c, const char *fn, const hg_vars *good,
-                              const char *why)
+/* A failed step: the instance goes to the error state; the model stays where the step began,
+ * so the last good outputs stay readable. */
+static fmi2Status step_failed(hg_instance *c, const char *fn, const char *why)
 {
     char inputs[HG_ERRLEN / 2];
     hg_describe_inputs(c, inputs, sizeof inputs);
-    hg_vars_copy_results(&c->vars, good);
     hg_error(c, fn, "%s (inputs %s)", why, inputs);
     c->state = ST_ERROR;
     return fmi2Error;
 }
 
+/* The outputs are computed when read (hg_instance_outputs), not after every step. */
 fmi2Status fmi2DoStep(fmi2Component comp, fmi2Real t, fmi2Real h, fmi2Boolean no_prior)
 {
     hg_instance *c = comp;
     char err[HG_ERRLEN];
-    hg_vars good;
-    const hg_var_info *bad;
     (void)no_prior;
     if (!hg_allowed(c, __func__, ST_STEP_COMPLETE)) return fmi2Error;
     if (!c->set_up || !c->model) return hg_fail(c, __func__, "the model is not set up");
     if (check_step(c, __func__, t, h)) return fmi2Error;
     hg_log(c, fmi2OK, CAT_ALL, "%s: t = %.9g s, h = %g s", __func__, t, h);
-    good = c->vars; /* shallow copy: only its results are ever copied back */
     if (h > 0.0 && hg_model_step(c->model, &c->vars, &c->input_der, h, err, sizeof err))
-        return step_failed(c, __func__, &good, err);
+        return step_failed(c, __func__, err);
     memset(&c->input_der, 0, sizeof c->input_der); /* derivatives apply to one step */
-    if ((bad = hg_first_nonfinite(c, 0)) != NULL) {
-        hg_errorf(err, sizeof err, "output %s became %g at t = %.9g s", bad->name,
-                  hg_real_value(c, bad), hg_model_time(c->model));
-        return step_failed(c, __func__, &good, err);
-    }
     return fmi2OK;
 }
 

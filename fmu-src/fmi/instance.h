@@ -65,6 +65,11 @@ hg_model *hg_instance_model(hg_instance *c);
 /* Sets the model up for the current parameters and initial inputs, once. */
 fmi2Status hg_ensure_set_up(hg_instance *c, const char *fn);
 
+/* Before output info is read: brings the outputs in c->vars up to date with the model (they
+ * are computed when first read after a step); a Real output that is not finite puts the
+ * instance in the error state. */
+fmi2Status hg_instance_output(hg_instance *c, const char *fn, const hg_var_info *info);
+
 /* The model time; the start time while no model is set up. */
 double hg_instance_time(const hg_instance *c);
 

@@ -20,6 +20,7 @@ struct hg_model {
     hg_solver *solver;
     hg_friction_table *table; /* friction_table on with an EHL friction model, else NULL */
     hg_runtime rt;
+    int outputs_current; /* the outputs written last are those of rt */
 };
 
 hg_model *hg_model_new(const char *resource_dir, hg_log_fn log, void *log_ctx)
@@ -87,11 +88,19 @@ static int make_solver(hg_model *m, char *err, size_t errlen)
     return m->solver ? 0 : -1;
 }
 
-static void write_outputs(const hg_model *m, hg_vars *v)
+static void write_outputs(hg_model *m, hg_vars *v)
 {
     long steps = 0, evals = 0;
     if (m->solver) hg_solver_stats(m->solver, &steps, &evals);
     hg_outputs_write(&m->s, &m->rt, steps, evals, v);
+    m->outputs_current = 1;
+}
+
+int hg_model_outputs_current(const hg_model *m) { return m->outputs_current; }
+
+void hg_model_outputs(hg_model *m, hg_vars *v)
+{
+    if (!m->outputs_current) write_outputs(m, v);
 }
 
 /* ------------------------------------------------------------------ the friction table */
@@ -123,38 +132,43 @@ static int setup_table(hg_model *m, const hg_vars *v, char *err, size_t errlen)
     return 0;
 }
 
-/* Keeps the table on the operating point at the start of a step: speed, oil temperature and a
- * load estimate (input torque over the mean radius, or the mean spring force); near standstill
- * the direct solve instead (hg_ft_speed_tabulated). The key lives in the runtime, so a restored
- * state rebuilds the very table it was run with; a new table, or a switch between table and
- * direct solve, restarts the integrator, whose history saw the old right-hand side. */
-static void update_table(hg_model *m, const hg_inputs *u)
+/* Keeps the table's key on the operating point at the start of a step: speed, oil temperature
+ * and a load estimate (input torque over the mean radius, or the mean spring force). The key
+ * lives in the runtime, so a restored state rebuilds the very table it was run with. Returns 1
+ * when the table must be built for the key; near standstill, where the direct solve runs
+ * instead (hg_ft_speed_tabulated), 0. */
+static int table_stale(hg_model *m, const hg_inputs *u)
 {
     hg_runtime *rt = &m->rt;
     hg_dyn_params *p = &m->s.p;
-    const hg_friction_table *before = p->table;
     double w_p = rt->y[HG_Y_W_P], T_oil = hg_dyn_oil_temperature(p, u, rt->y), W;
-    if (!m->table) return;
-    if (!hg_ft_speed_tabulated(w_p)) {
-        p->table = NULL;
-        if (before) rt->restart = 1;
-        return;
-    }
+    if (!m->table || !hg_ft_speed_tabulated(w_p)) return 0;
     W = fmax(fabs(u->T_s) / p->R_p0,
              p->k_m0 * fabs(hg_backlash_f(&p->backlash, rt->y[HG_Y_X], rt->mode)));
     if (!rt->ft_valid || !hg_ft_key_covers(&rt->ft_key, w_p, T_oil, W)) {
         hg_ft_key_next(&rt->ft_key, rt->ft_valid, w_p, p->ratio, T_oil, W);
         rt->ft_valid = 1;
     }
-    if (!m->table->built || memcmp(&m->table->key, &rt->ft_key, sizeof rt->ft_key)) {
-        hg_friction_table_build(m->table, &p->friction, &m->s.gear, &rt->ft_key);
-        rt->restart = 1; /* the right-hand side changed (within the table's error) */
-        hg_logf(&m->log, "logEvents", "t = %.6f s: friction table built for %.1f rpm, T_oil = "
-                "%.2f degC, pair loads up to %.0f N", rt->t, rt->ft_key.w_p * 9.549296585513721,
-                rt->ft_key.T_bath - 273.15, rt->ft_key.W_max);
-    }
-    p->table = m->table->usable ? m->table : NULL;
-    if (p->table != before) rt->restart = 1;
+    return !m->table->built || memcmp(&m->table->key, &rt->ft_key, sizeof rt->ft_key);
+}
+
+/* A new table changes the right-hand side (within the table's error): like a jump of the inputs
+ * it restarts the integrator, whose history saw the old one. */
+static void build_table(hg_model *m)
+{
+    const hg_runtime *rt = &m->rt;
+    hg_friction_table_build(m->table, &m->s.p.friction, &m->s.gear, &rt->ft_key);
+    hg_logf(&m->log, "logEvents", "t = %.6f s: friction table built for %.1f rpm, T_oil = "
+            "%.2f degC, pair loads up to %.0f N", rt->t, rt->ft_key.w_p * 9.549296585513721,
+            rt->ft_key.T_bath - 273.15, rt->ft_key.W_max);
+}
+
+/* The table the right-hand side uses this step (after table_stale and any build): none without
+ * one, near standstill or when it is not usable (the direct solve then runs). */
+static hg_friction_table *table_in_use(const hg_model *m)
+{
+    return m->table && hg_ft_speed_tabulated(m->rt.y[HG_Y_W_P]) && m->table->usable ? m->table
+                                                                                     : NULL;
 }
 
 /* ------------------------------------------------------------------ set-up */
@@ -179,30 +193,61 @@ int hg_model_setup(hg_model *m, hg_vars *v, double t0, char *err, size_t errlen)
 
 /* ------------------------------------------------------------------ stepping */
 
+/* The inputs of a step and whether the integrator restarts for them (docs/model.md, "Steps
+ * without restarts"): a change of their derivatives alone keeps the right-hand side continuous
+ * and does not; a jump of their values or a new friction table does (the explicit method keeps
+ * its step size: its history is that alone); anything does when the integrator has already
+ * stepped past the step's start on the old right-hand side. */
 static int begin_step(hg_model *m, const hg_vars *v, const hg_inputs *du, char *err,
                       size_t errlen)
 {
     hg_runtime *rt = &m->rt;
     hg_inputs u;
+    hg_input_change change;
+    int rebuild, fresh = rt->restart;
     hg_vars_inputs(v, &u);
-    hg_stepping_begin(rt, &m->s, &u, du);
-    update_table(m, &u);
+    change = hg_stepping_change(rt, &u, du);
+    rebuild = table_stale(m, &u);
+    if (change == HG_INPUTS_JUMP || rebuild || (rt->ahead && change != HG_INPUTS_SAME))
+        rt->restart = 1;
+    hg_stepping_begin(rt, &m->s, &u, du, change);
+    if (rebuild) build_table(m);
+    if (table_in_use(m) != m->s.p.table) { /* to or from the direct solve: a restart */
+        m->s.p.table = table_in_use(m);
+        rt->restart = 1;
+    }
     if (hg_solver_set_max_step(m->solver, hg_stepping_step_limit(rt, &m->s), err, errlen))
         return -1;
-    if (rt->restart && hg_solver_restart(m->solver, rt->t, rt->y, err, errlen)) return -1;
+    if (rt->restart && hg_solver_restart(m->solver, rt->t, rt->y,
+                                         fresh || !m->s.explicit_rk ? 0.0 : rt->h_int, err,
+                                         errlen))
+        return -1;
     rt->restart = 0;
     return 0;
 }
 
-int hg_model_step(hg_model *m, hg_vars *v, const hg_inputs *du, double h, char *err,
-                  size_t errlen)
+/* The first state that is not finite (its index), or -1. */
+static int nonfinite_state(const double *y)
+{
+    int k;
+    for (k = 0; k < HG_NY; k++)
+        if (!isfinite(y[k])) return k;
+    return -1;
+}
+
+static int advance(hg_model *m, const hg_vars *v, const hg_inputs *du, double h, char *err,
+                   size_t errlen)
 {
     hg_runtime *rt = &m->rt;
     double t_end = rt->t + h;
-    int events = 0, dir[HG_STEPPING_N_ROOTS];
+    long steps0 = 0, steps1 = 0, evals = 0;
+    int events = 0, dir[HG_STEPPING_N_ROOTS], pass;
     if (begin_step(m, v, du, err, errlen)) return -1;
+    pass = hg_stepping_may_pass(rt);
+    hg_solver_stats(m->solver, &steps0, &evals);
     while (rt->t < t_end) {
-        hg_advance_result r = hg_solver_advance(m->solver, t_end, &rt->t, rt->y, dir, err, errlen);
+        hg_advance_result r =
+            hg_solver_advance(m->solver, t_end, pass, &rt->t, rt->y, dir, err, errlen);
         if (r == HG_ADVANCE_FAILED) return -1;
         if (r == HG_ADVANCE_REACHED) break;
         if (++events > MAX_EVENTS_PER_STEP) {
@@ -216,12 +261,29 @@ int hg_model_step(hg_model *m, hg_vars *v, const hg_inputs *du, double h, char *
          * the integrator sees but its root function, which it re-evaluates at the root */
         if ((dir[0] || dir[1]) &&
             (hg_stepping_contact_event(rt, &m->s, dir, &m->log),
-             hg_solver_restart(m->solver, rt->t, rt->y, err, errlen)))
+             hg_solver_restart(m->solver, rt->t, rt->y, 0.0, err, errlen)))
             return -1;
     }
+    hg_solver_stats(m->solver, &steps1, &evals);
+    rt->h_int = h / (double)(steps1 > steps0 ? steps1 - steps0 : 1);
+    rt->ahead = pass;
     hg_stepping_end(rt, &m->s, t_end, &m->log);
-    write_outputs(m, v);
     return 0;
+}
+
+int hg_model_step(hg_model *m, hg_vars *v, const hg_inputs *du, double h, char *err,
+                  size_t errlen)
+{
+    hg_runtime start = m->rt;
+    int bad = -1;
+    m->outputs_current = 0;
+    if (!advance(m, v, du, h, err, errlen) && (bad = nonfinite_state(m->rt.y)) < 0) return 0;
+    if (bad >= 0)
+        hg_errorf(err, errlen, "state %d of the integrator became %g at t = %.9g s", bad,
+                  m->rt.y[bad], m->rt.t);
+    m->rt = start; /* the last good state, whose outputs stay readable */
+    m->rt.restart = 1;
+    return -1;
 }
 
 /* ------------------------------------------------------------------ snapshots */

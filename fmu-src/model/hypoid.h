@@ -24,9 +24,17 @@ void hg_model_free(hg_model *m);
 int hg_model_setup(hg_model *m, hg_vars *v, double t0, char *err, size_t errlen);
 
 /* Advances from the current time by h with the inputs of v (and their derivatives du, held
- * over the step), handling every contact change and averaging window inside; writes outputs. */
+ * over the step), handling every contact change and averaging window inside. The outputs of v
+ * are then out of date until hg_model_outputs writes them (computed when read). A failed step
+ * (err filled, or a state that is not finite) leaves the model where the step began. */
 int hg_model_step(hg_model *m, hg_vars *v, const hg_inputs *du, double h, char *err,
                   size_t errlen);
+
+/* Whether the outputs in v are those of the model's current state. */
+int hg_model_outputs_current(const hg_model *m);
+
+/* Writes the outputs of the current state into v (when they are out of date). */
+void hg_model_outputs(hg_model *m, hg_vars *v);
 
 double hg_model_time(const hg_model *m);
 

@@ -7,6 +7,8 @@
 #define WRAP_PERIODS 1024     /* wrap the pinion angle after this many load-share periods */
 #define MAX_AUTO_STEP 1e-3    /* [s] */
 #define STEPS_PER_MODE 8      /* fixed steps per period of the highest natural mode, at least */
+#define HOLD_STEPS 4          /* steps with held inputs before the integrator may pass a step's
+                                 end (hg_stepping_may_pass) */
 
 /* Static equilibrium at speed (docs/physics.md §8.6): shafts twisted by their torques, mesh deflected by
  * W_t / k_m beyond the backlash on the loaded flank. */
@@ -50,12 +52,24 @@ void hg_stepping_inputs_at(const hg_runtime *rt, double t, hg_inputs *u)
         *hg_input(u, k) = hg_input_value(&rt->u0, k) + hg_input_value(&rt->du, k) * dt;
 }
 
+/* Bitwise: hg_inputs holds only (finite) doubles; a -0 for a 0 counts as a change. */
 static int inputs_changed(const hg_inputs *a, const hg_inputs *b)
 {
-    int k;
-    for (k = 0; k < HG_NUM_INPUTS; k++)
-        if (hg_input_value(a, k) != hg_input_value(b, k)) return 1;
-    return 0;
+    return memcmp(a, b, sizeof *a) != 0;
+}
+
+hg_input_change hg_stepping_change(const hg_runtime *rt, const hg_inputs *u,
+                                   const hg_inputs *du)
+{
+    if (inputs_changed(u, &rt->u_end)) return HG_INPUTS_JUMP;
+    return inputs_changed(du, &rt->du) ? HG_INPUTS_KINK : HG_INPUTS_SAME;
+}
+
+int hg_stepping_may_pass(const hg_runtime *rt)
+{
+    hg_inputs zero;
+    memset(&zero, 0, sizeof zero);
+    return rt->held >= HOLD_STEPS && !inputs_changed(&rt->du, &zero);
 }
 
 /* Keep the pinion angle small (rtol acts on |phi_p|) by whole load-share periods. */
@@ -70,9 +84,9 @@ static void wrap_angle(hg_runtime *rt, const hg_setup *s)
 }
 
 void hg_stepping_begin(hg_runtime *rt, const hg_setup *s, const hg_inputs *u,
-                       const hg_inputs *du)
+                       const hg_inputs *du, hg_input_change change)
 {
-    if (inputs_changed(u, &rt->u_end) || inputs_changed(du, &rt->du)) rt->restart = 1;
+    rt->held = change != HG_INPUTS_SAME ? 0 : rt->held < HOLD_STEPS ? rt->held + 1 : HOLD_STEPS;
     rt->u0 = *u;
     rt->du = *du;
     rt->t_u0 = rt->t;

@@ -19,6 +19,10 @@ typedef struct {
     double t_u0;                   /* time at which u0 holds */
     hg_inputs u_end;               /* inputs extrapolated to the end of the last step */
     int restart;                   /* the integrator must restart before the next step */
+    int held;                      /* steps in a row with the inputs unchanged (capped) */
+    int ahead;                     /* the integrator stepped past t on the last step's inputs */
+    double h_int;                  /* mean integrator step of the last step [s]: the first step
+                                      of the explicit method's restarts */
     double win_phi0, win_t0;       /* start of the averaging window: pinion angle, time */
     double win_eta2_0, win_efric_0, win_eta_axle2_0;
     int windows;                   /* averaging windows completed */
@@ -34,10 +38,22 @@ void hg_stepping_start(hg_runtime *rt, const hg_setup *s, const hg_vars *v, doub
 /* The inputs at time t: u0 extrapolated with du. */
 void hg_stepping_inputs_at(const hg_runtime *rt, double t, hg_inputs *u);
 
-/* Takes the inputs u and derivatives du for a step from the current time; asks for a restart
- * when they differ from what the integrator last saw, and wraps the pinion angle. */
+/* How the inputs u (derivatives du) of a step differ from those the last step ended with:
+ * not at all, in their derivatives only (a kink: the right-hand side stays continuous), or in
+ * their values (a jump of the right-hand side). */
+typedef enum { HG_INPUTS_SAME, HG_INPUTS_KINK, HG_INPUTS_JUMP } hg_input_change;
+hg_input_change hg_stepping_change(const hg_runtime *rt, const hg_inputs *u,
+                                   const hg_inputs *du);
+
+/* Takes the inputs u and derivatives du (changed as said) for a step from the current time and
+ * wraps the pinion angle (a restart). */
 void hg_stepping_begin(hg_runtime *rt, const hg_setup *s, const hg_inputs *u,
-                       const hg_inputs *du);
+                       const hg_inputs *du, hg_input_change change);
+
+/* Whether the integrator may step past the end of this step (hg_solver_advance's pass): the
+ * inputs are held (no derivatives) and have been for a few steps, so that the next step will
+ * most likely continue on the same right-hand side. */
+int hg_stepping_may_pass(const hg_runtime *rt);
 
 /* The longest integrator step of this communication step [s] (0: no limit). */
 double hg_stepping_step_limit(const hg_runtime *rt, const hg_setup *s);

@@ -41,9 +41,10 @@ void hg_solver_free(hg_solver *s)
     free(s);
 }
 
-int hg_solver_restart(hg_solver *s, double t0, const double *y0, char *err, size_t errlen)
+int hg_solver_restart(hg_solver *s, double t0, const double *y0, double h0, char *err,
+                      size_t errlen)
 {
-    return s->ops->restart(s->impl, t0, y0, err, errlen);
+    return s->ops->restart(s->impl, t0, y0, h0, err, errlen);
 }
 
 int hg_solver_set_max_step(hg_solver *s, double h_max, char *err, size_t errlen)
@@ -51,10 +52,10 @@ int hg_solver_set_max_step(hg_solver *s, double h_max, char *err, size_t errlen)
     return s->ops->set_max_step(s->impl, h_max, err, errlen);
 }
 
-hg_advance_result hg_solver_advance(hg_solver *s, double t_stop, double *t, double *y,
+hg_advance_result hg_solver_advance(hg_solver *s, double t_stop, int pass, double *t, double *y,
                                     int *roots, char *err, size_t errlen)
 {
-    return s->ops->advance(s->impl, t_stop, t, y, roots, err, errlen);
+    return s->ops->advance(s->impl, t_stop, pass, t, y, roots, err, errlen);
 }
 
 void hg_solver_stats(const hg_solver *s, long *steps, long *rhs_evals)

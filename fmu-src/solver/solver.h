@@ -28,18 +28,24 @@ hg_solver *hg_solver_new(int n, int n_roots, hg_rhs_fn f, hg_root_fn g, void *us
                          const hg_solver_options *opt, char *err, size_t errlen);
 void hg_solver_free(hg_solver *s);
 
-/* Starts (or restarts, discarding the history) the integration from (t0, y0). */
-int hg_solver_restart(hg_solver *s, double t0, const double *y0, char *err, size_t errlen);
+/* Starts (or restarts, discarding the history) the integration from (t0, y0); h0 is the first
+ * step to try (0: the integrator's own estimate; the fixed-step method keeps its step). */
+int hg_solver_restart(hg_solver *s, double t0, const double *y0, double h0, char *err,
+                      size_t errlen);
 
 /* Largest internal step (0 = unlimited); for the fixed-step method, the step itself. */
 int hg_solver_set_max_step(hg_solver *s, double h_max, char *err, size_t errlen);
 
 typedef enum { HG_ADVANCE_REACHED, HG_ADVANCE_ROOT, HG_ADVANCE_FAILED } hg_advance_result;
 
-/* Integrates towards t_stop without passing it. Returns REACHED with *t = t_stop, or ROOT with
- * *t at the first root and roots[i] = +1/-1 for each root function that crossed upwards/
- * downwards (0 otherwise); y receives the solution at *t. FAILED fills err. */
-hg_advance_result hg_solver_advance(hg_solver *s, double t_stop, double *t, double *y,
+/* Integrates towards t_stop. Returns REACHED with *t = t_stop, or ROOT with *t at the first
+ * root and roots[i] = +1/-1 for each root function that crossed upwards/downwards (0 otherwise);
+ * y receives the solution at *t. FAILED fills err. With pass = 0 the integrator stops exactly at
+ * t_stop; with pass = 1 it may step beyond t_stop (the right-hand side must hold there as it is)
+ * and give the solution at t_stop from its interpolant, so that held inputs cost no steps cut
+ * short at every t_stop. Only CVODE passes (its Nordsieck interpolant has the method's order);
+ * the others stop at t_stop all the same. */
+hg_advance_result hg_solver_advance(hg_solver *s, double t_stop, int pass, double *t, double *y,
                                     int *roots, char *err, size_t errlen);
 
 /* Cumulative count of internal steps and right-hand-side evaluations. */

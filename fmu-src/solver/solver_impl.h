@@ -17,10 +17,11 @@ typedef struct {
     void *(*create)(const hg_problem *pb, const hg_solver_options *opt, char *err,
                     size_t errlen);
     void (*destroy)(void *impl);
-    int (*restart)(void *impl, double t0, const double *y0, char *err, size_t errlen);
+    int (*restart)(void *impl, double t0, const double *y0, double h0, char *err,
+                   size_t errlen);
     int (*set_max_step)(void *impl, double h_max, char *err, size_t errlen);
-    hg_advance_result (*advance)(void *impl, double t_stop, double *t, double *y, int *roots,
-                                 char *err, size_t errlen);
+    hg_advance_result (*advance)(void *impl, double t_stop, int pass, double *t, double *y,
+                                 int *roots, char *err, size_t errlen);
     void (*stats)(const void *impl, long *steps, long *rhs_evals);
 } hg_solver_ops;
 

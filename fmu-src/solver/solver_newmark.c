@@ -71,9 +71,11 @@ static void *create(const hg_problem *pb, const hg_solver_options *opt, char *er
     return s;
 }
 
-static int restart(void *impl, double t0, const double *y0, char *err, size_t errlen)
+static int restart(void *impl, double t0, const double *y0, double h0, char *err,
+                   size_t errlen)
 {
     newmark *s = impl;
+    (void)h0;
     (void)err;
     (void)errlen;
     s->t = t0;
@@ -239,11 +241,13 @@ static void root_directions(const newmark *s, int *roots)
     }
 }
 
-static hg_advance_result advance(void *impl, double t_stop, double *t, double *y, int *roots,
-                                 char *err, size_t errlen)
+/* Fixed steps that end exactly at t_stop (pass is ignored). */
+static hg_advance_result advance(void *impl, double t_stop, int pass, double *t, double *y,
+                                 int *roots, char *err, size_t errlen)
 {
     newmark *s = impl;
     long taken = 0;
+    (void)pass;
     if (!s->have_f0) {
         if (rhs(s, s->t, s->y, s->f0)) goto failed;
         s->have_f0 = 1;

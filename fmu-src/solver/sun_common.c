@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#define NO_STOP 1e300 /* [s] a stop time never reached */
+
 /* Calls the integrator's function api->fn with the arguments args; on failure returns
  * hg_sun_fail() with the name the table gives it. */
 #define API_CALL(b, fn, args) \
@@ -134,14 +136,17 @@ static long counter(const hg_sun *b, int (*get)(void *, long *))
     return get(b->mem, &n) == b->api->success ? n : 0;
 }
 
-/* Adds the run's counters to the earlier ones (a re-init resets them) and starts again at y0. */
-int hg_sun_restart(void *impl, double t0, const double *y0, char *err, size_t errlen)
+/* Adds the run's counters to the earlier ones (a re-init resets them) and starts again at y0
+ * with the first step h0 (0: the integrator's estimate). */
+int hg_sun_restart(void *impl, double t0, const double *y0, double h0, char *err,
+                   size_t errlen)
 {
     hg_sun *b = impl;
     b->steps_before += counter(b, b->api->num_steps);
     b->rhs_before += counter(b, b->api->num_rhs_evals);
     memcpy(N_VGetArrayPointer(b->y), y0, (size_t)b->pb.n * sizeof(double));
     b->last_error[0] = '\0';
+    API_CALL(b, set_init_step, (b->mem, h0));
     API_CALL(b, reinit, (b->mem, t0, b->y));
     return 0;
 }
@@ -153,11 +158,15 @@ int hg_sun_set_max_step(void *impl, double h_max, char *err, size_t errlen)
     return 0;
 }
 
-/* Integrates towards t_stop, stopping there exactly; *flag is the integrator's return. */
-static int integrate(hg_sun *b, double t_stop, double *t, int *flag, char *err, size_t errlen)
+/* Integrates towards t_stop; *flag is the integrator's return. Without pass it stops there
+ * exactly; with it (where the integrator can) it steps on and interpolates, under a stop time out
+ * of reach: an earlier one would still be in force after a step that returned at t_stop by
+ * interpolation, and CVODE 6.4 would return there at the next call. */
+static int integrate(hg_sun *b, double t_stop, int pass, double *t, int *flag, char *err,
+                     size_t errlen)
 {
     sunrealtype t_ret = *t;
-    API_CALL(b, set_stop_time, (b->mem, t_stop));
+    API_CALL(b, set_stop_time, (b->mem, pass && b->api->can_pass ? NO_STOP : t_stop));
     *flag = b->api->evolve(b->mem, t_stop, b->y, &t_ret, b->api->normal);
     *t = t_ret;
     if (*flag == b->api->root_return) API_CALL(b, root_info, (b->mem, b->root_info));
@@ -165,13 +174,13 @@ static int integrate(hg_sun *b, double t_stop, double *t, int *flag, char *err, 
 }
 
 /* y from b->y, and ROOT (roots from b->root_info) or REACHED with *t = t_stop. */
-hg_advance_result hg_sun_advance(void *impl, double t_stop, double *t, double *y, int *roots,
-                                 char *err, size_t errlen)
+hg_advance_result hg_sun_advance(void *impl, double t_stop, int pass, double *t, double *y,
+                                 int *roots, char *err, size_t errlen)
 {
     hg_sun *b = impl;
     const hg_sun_api *api = b->api;
     int flag = api->success;
-    if (integrate(b, t_stop, t, &flag, err, errlen)) return HG_ADVANCE_FAILED;
+    if (integrate(b, t_stop, pass, t, &flag, err, errlen)) return HG_ADVANCE_FAILED;
     if (flag != api->root_return && flag != api->success && flag != api->tstop_return) {
         hg_sun_fail(b, err, errlen, api->evolve_name, flag);
         return HG_ADVANCE_FAILED;

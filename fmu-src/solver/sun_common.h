@@ -31,15 +31,20 @@ typedef struct {
     void (*release)(hg_sun *b); /* what make made (NULL members skipped) */
     char *(*flag_name)(long flag);
     int success, tstop_return, root_return, normal; /* CV_SUCCESS ... / ARK_SUCCESS ... */
+    /* 1: steps past t_stop and interpolates when asked (hg_solver_advance's pass): CVODE, whose
+     * Nordsieck interpolant has the method's order; ARKODE's dense output for the ERK pair is of
+     * lower degree than the method, so it always stops at t_stop */
+    int can_pass;
     int (*reinit)(void *mem, sunrealtype t0, N_Vector y0);
     int (*set_max_step)(void *mem, sunrealtype h_max);
+    int (*set_init_step)(void *mem, sunrealtype h0);
     int (*set_stop_time)(void *mem, sunrealtype t_stop);
     int (*evolve)(void *mem, sunrealtype t_out, N_Vector y, sunrealtype *t_ret, int task);
     int (*root_info)(void *mem, int *found);
     int (*num_steps)(void *mem, long *n);
     int (*num_rhs_evals)(void *mem, long *n);
-    const char *reinit_name, *set_max_step_name, *set_stop_time_name, *evolve_name,
-        *root_info_name;
+    const char *reinit_name, *set_max_step_name, *set_init_step_name, *set_stop_time_name,
+        *evolve_name, *root_info_name;
 } hg_sun_api;
 
 struct hg_sun {
@@ -84,10 +89,11 @@ int hg_sun_fail_new(const char *who, char *err, size_t errlen, const char *what)
 void *hg_sun_create(const hg_sun_api *api, const hg_problem *pb, const hg_solver_options *opt,
                     char *err, size_t errlen);
 void hg_sun_destroy(void *impl);
-int hg_sun_restart(void *impl, double t0, const double *y0, char *err, size_t errlen);
+int hg_sun_restart(void *impl, double t0, const double *y0, double h0, char *err,
+                   size_t errlen);
 int hg_sun_set_max_step(void *impl, double h_max, char *err, size_t errlen);
-hg_advance_result hg_sun_advance(void *impl, double t_stop, double *t, double *y, int *roots,
-                                 char *err, size_t errlen);
+hg_advance_result hg_sun_advance(void *impl, double t_stop, int pass, double *t, double *y,
+                                 int *roots, char *err, size_t errlen);
 void hg_sun_stats(const void *impl, long *steps, long *rhs_evals);
 
 #endif

@@ -69,7 +69,7 @@ static hg_solver *make(hg_method method, oscillator *o, int n_roots, double h)
         return NULL;
     }
     CHECK(hg_solver_set_max_step(s, h, err, sizeof err) == 0);
-    CHECK(hg_solver_restart(s, 0.0, y0, err, sizeof err) == 0);
+    CHECK(hg_solver_restart(s, 0.0, y0, 0.0, err, sizeof err) == 0);
     return s;
 }
 
@@ -84,7 +84,7 @@ static void check_trajectory(hg_method method, double zeta, double tol)
     int k;
     if (!s) return;
     for (k = 1; k <= 20; k++) {
-        hg_advance_result r = hg_solver_advance(s, k * T / 10.0, &t, y, NULL, err, sizeof err);
+        hg_advance_result r = hg_solver_advance(s, k * T / 10.0, 0, &t, y, NULL, err, sizeof err);
         CHECK(r == HG_ADVANCE_REACHED);
         CHECK(t == k * T / 10.0);
         CHECK_CLOSE(y[0], x_exact(&o, t), 0.0, tol);
@@ -104,13 +104,13 @@ static void check_roots(hg_method method, double zeta, double tol)
     int k, dir[1];
     if (!s) return;
     for (k = 0; k < 4; k++) {
-        hg_advance_result r = hg_solver_advance(s, 3.0 * T, &t, y, dir, err, sizeof err);
+        hg_advance_result r = hg_solver_advance(s, 3.0 * T, 0, &t, y, dir, err, sizeof err);
         CHECK(r == HG_ADVANCE_ROOT);
         CHECK_CLOSE(t, zero_exact(&o, k), 0.0, tol);
         CHECK(dir[0] == (k % 2 == 0 ? -1 : 1));
         CHECK(fabs(y[0]) < 1e-6);
         /* continue from the root as the model does: a restart there */
-        CHECK(hg_solver_restart(s, t, y, err, sizeof err) == 0);
+        CHECK(hg_solver_restart(s, t, y, 0.0, err, sizeof err) == 0);
     }
     hg_solver_free(s);
 }
@@ -126,7 +126,7 @@ static void check_newmark_discrete(void)
     int n;
     if (!s) return;
     for (n = 1; n <= 64; n++) {
-        CHECK(hg_solver_advance(s, n * h, &t, y, NULL, err, sizeof err) == HG_ADVANCE_REACHED);
+        CHECK(hg_solver_advance(s, n * h, 0, &t, y, NULL, err, sizeof err) == HG_ADVANCE_REACHED);
         CHECK_CLOSE(y[0], cos(n * angle), 0.0, 1e-9);
         CHECK_CLOSE(y[1], -o.w * sin(n * angle), 0.0, 1e-9 * o.w);
     }
@@ -134,6 +134,36 @@ static void check_newmark_discrete(void)
      * 2 pi (w h)^2 / 12 = 5.0e-3 rad, so x' = w sin(5.0e-3) */
     CHECK_CLOSE(y[1], o.w * sin(2.0 * PI * pow(2.0 * PI / 64.0, 2) / 12.0), 2e-3, 0.0);
     hg_solver_free(s);
+}
+
+/* Communication points far denser than the integrator's own steps (no step limit): stopping
+ * at each costs at least one step per point; passing them (pass = 1, CVODE) interpolates, with
+ * the same accuracy against the closed form and a fraction of the steps. */
+static long dense_points(hg_method method, int pass, double tol)
+{
+    oscillator o = {2.0 * PI * 5.0, 0.05};
+    double T = 2.0 * PI / o.w, t = 0.0, y[2];
+    char err[256] = "";
+    hg_solver *s = make(method, &o, 0, 0.0);
+    long steps = 0, evals = 0;
+    int k;
+    if (!s) return 0;
+    for (k = 1; k <= 2000; k++) {
+        CHECK(hg_solver_advance(s, k * T / 1000.0, pass, &t, y, NULL, err, sizeof err) ==
+              HG_ADVANCE_REACHED);
+        CHECK(t == k * T / 1000.0);
+        CHECK_CLOSE(y[0], x_exact(&o, t), 0.0, tol);
+    }
+    hg_solver_stats(s, &steps, &evals);
+    hg_solver_free(s);
+    return steps;
+}
+
+static void check_passing(hg_method method, double tol)
+{
+    long exact = dense_points(method, 0, tol), passing = dense_points(method, 1, tol);
+    CHECK(exact >= 2000);
+    CHECK(passing > 0 && passing < exact / 2);
 }
 
 /* A bad step names the method and the reason. */
@@ -165,6 +195,8 @@ int main(void)
         check_roots(methods[i], 0.0, tol[i] / 100.0);
         check_roots(methods[i], 0.05, tol[i] / 100.0);
     }
+    check_passing(HG_METHOD_BDF, tol[0]);
+    check_passing(HG_METHOD_ADAMS, tol[1]);
     check_newmark_discrete();
     check_errors();
     CHECK_DONE();
