@@ -193,35 +193,57 @@ int hg_model_setup(hg_model *m, hg_vars *v, double t0, char *err, size_t errlen)
 
 /* ------------------------------------------------------------------ stepping */
 
+/* The right-hand side at the current state with the inputs u, the thermal warm starts left as
+ * they are. */
+static void rhs_now(hg_model *m, const hg_inputs *u, double *ydot)
+{
+    hg_dyn_eval ev;
+    double warm[HG_MAX_PAIRS];
+    memcpy(warm, m->rt.T_c_warm, sizeof warm);
+    hg_dyn_evaluate(&m->s.p, u, m->rt.mode, m->rt.y, 0, warm, &ev);
+    hg_dyn_derivatives(&m->s.p, u, m->rt.y, &ev, ydot);
+}
+
 /* The inputs of a step and whether the integrator restarts for them (docs/model.md, "Steps
  * without restarts"): a change of their derivatives alone keeps the right-hand side continuous
- * and does not; a jump of their values or a new friction table does (the explicit method keeps
- * its step size: its history is that alone); anything does when the integrator has already
- * stepped past the step's start on the old right-hand side. */
-static int begin_step(hg_model *m, const hg_vars *v, const hg_inputs *du, char *err,
-                      size_t errlen)
+ * and does not; a jump of their values or a new friction table does; anything does when the
+ * integrator has already stepped past the step's start on the old right-hand side. The explicit
+ * method, whose history is its step size alone, keeps it through a jump small against its
+ * tolerances (hg_stepping_jump_small); *h0 is then its first step, else 0. */
+static void begin_inputs(hg_model *m, const hg_vars *v, const hg_inputs *du, double *h0)
 {
     hg_runtime *rt = &m->rt;
     hg_inputs u;
     hg_input_change change;
-    int rebuild, fresh = rt->restart;
+    double f_old[HG_NY], f_new[HG_NY];
+    int rebuild, keep;
     hg_vars_inputs(v, &u);
     change = hg_stepping_change(rt, &u, du);
     rebuild = table_stale(m, &u);
+    keep = m->s.explicit_rk && !rt->restart && (change == HG_INPUTS_JUMP || rebuild);
     if (change == HG_INPUTS_JUMP || rebuild || (rt->ahead && change != HG_INPUTS_SAME))
         rt->restart = 1;
+    if (keep) rhs_now(m, &rt->u_end, f_old);
     hg_stepping_begin(rt, &m->s, &u, du, change);
     if (rebuild) build_table(m);
-    if (table_in_use(m) != m->s.p.table) { /* to or from the direct solve: a restart */
+    if (table_in_use(m) != m->s.p.table) { /* to or from the direct solve: a full restart */
         m->s.p.table = table_in_use(m);
         rt->restart = 1;
+        keep = 0;
     }
+    if (keep) rhs_now(m, &u, f_new);
+    *h0 = keep && hg_stepping_jump_small(rt, &m->s, f_old, f_new) ? rt->h_int : 0.0;
+}
+
+static int begin_step(hg_model *m, const hg_vars *v, const hg_inputs *du, char *err,
+                      size_t errlen)
+{
+    hg_runtime *rt = &m->rt;
+    double h0;
+    begin_inputs(m, v, du, &h0);
     if (hg_solver_set_max_step(m->solver, hg_stepping_step_limit(rt, &m->s), err, errlen))
         return -1;
-    if (rt->restart && hg_solver_restart(m->solver, rt->t, rt->y,
-                                         fresh || !m->s.explicit_rk ? 0.0 : rt->h_int, err,
-                                         errlen))
-        return -1;
+    if (rt->restart && hg_solver_restart(m->solver, rt->t, rt->y, h0, err, errlen)) return -1;
     rt->restart = 0;
     return 0;
 }

@@ -65,6 +65,18 @@ hg_input_change hg_stepping_change(const hg_runtime *rt, const hg_inputs *u,
     return inputs_changed(du, &rt->du) ? HG_INPUTS_KINK : HG_INPUTS_SAME;
 }
 
+int hg_stepping_jump_small(const hg_runtime *rt, const hg_setup *s, const double *f_old,
+                           const double *f_new)
+{
+    double sum = 0.0;
+    int k;
+    for (k = 0; k < HG_NY; k++) {
+        double e = rt->h_int * (f_new[k] - f_old[k]) / (s->rtol * fabs(rt->y[k]) + s->atol[k]);
+        sum += e * e;
+    }
+    return sqrt(sum / HG_NY) <= 1.0;
+}
+
 int hg_stepping_may_pass(const hg_runtime *rt)
 {
     hg_inputs zero;

@@ -50,6 +50,12 @@ hg_input_change hg_stepping_change(const hg_runtime *rt, const hg_inputs *u,
 void hg_stepping_begin(hg_runtime *rt, const hg_setup *s, const hg_inputs *u,
                        const hg_inputs *du, hg_input_change change);
 
+/* Whether a jump of the right-hand side from f_old to f_new at the current state is small
+ * against the integrator's tolerances: its effect over one mean integrator step,
+ * h_int |f_new - f_old|, has a weighted RMS norm (weights rtol |y| + atol) of at most 1. */
+int hg_stepping_jump_small(const hg_runtime *rt, const hg_setup *s, const double *f_old,
+                           const double *f_new);
+
 /* Whether the integrator may step past the end of this step (hg_solver_advance's pass): the
  * inputs are held (no derivatives) and have been for a few steps, so that the next step will
  * most likely continue on the same right-hand side. */
