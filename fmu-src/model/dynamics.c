@@ -179,9 +179,16 @@ static void rigid_mesh(const hg_dyn_params *p, const double *y,
     net_force_loads(ev);
 }
 
+/* The larger of a and b, neither NaN. */
+static double larger(double a, double b) { return a > b ? a : b; }
+
+/* max(x, 0), +0 for NaN and -0: fmax(x, 0.0) without its call (the right-hand side makes a dozen
+ * of them; libm's fmax is not inlined). */
+static double at_least_zero(double x) { return x > 0.0 ? x : 0.0; }
+
 static double efficiency_of(double P_loss, double P_in)
 {
-    if (P_in > 0.0) return fmax(0.0, 1.0 - P_loss / P_in);
+    if (P_in > 0.0) return at_least_zero(1.0 - P_loss / P_in);
     return P_loss > 0.0 ? 0.0 : 1.0;
 }
 
@@ -192,7 +199,7 @@ static double efficiency_of(double P_loss, double P_in)
 static double source_power(double P_end, double P_member, double P_scale)
 {
     double s = P_end <= 0.0 ? 0.0 : P_end >= P_scale ? 1.0 : P_end / P_scale;
-    return P_end + fmax(P_member - P_end, 0.0) * (1.0 - s);
+    return P_end + at_least_zero(P_member - P_end) * (1.0 - s);
 }
 
 /* Efficiencies on the power that enters from the side that drives at this instant. The pinion
@@ -205,12 +212,13 @@ static void efficiency(const hg_inputs *u, const double *y, hg_dyn_eval *ev)
     double end_s = u->T_s * y[HG_Y_W_S], end_w = -ev->T_w * y[HG_Y_W_W];
     double mesh_p = (ev->mesh.R_p * ev->W_t - ev->T_fp) * w_p;
     double mesh_g = -(ev->R_g * ev->W_t + ev->T_fg) * w_g;
-    ev->P_in = fmax(0.0, fmax(source_power(end_s, mesh_p, ev->P_loss),
-                              source_power(end_w, mesh_g, ev->P_loss)));
+    ev->P_in = larger(at_least_zero(source_power(end_s, mesh_p, ev->P_loss)),
+                      at_least_zero(source_power(end_w, mesh_g, ev->P_loss)));
     ev->eta = efficiency_of(ev->P_loss, ev->P_in);
     ev->P_axle = ev->P_loss + ev->axle.P_churn + ev->axle.P_bearings + ev->axle.P_seals;
-    ev->P_in_axle = fmax(0.0, fmax(source_power(end_s, mesh_p - ev->axle.T_p * w_p, ev->P_axle),
-                                   source_power(end_w, mesh_g - ev->axle.T_g * w_g, ev->P_axle)));
+    ev->P_in_axle =
+        larger(at_least_zero(source_power(end_s, mesh_p - ev->axle.T_p * w_p, ev->P_axle)),
+               at_least_zero(source_power(end_w, mesh_g - ev->axle.T_g * w_g, ev->P_axle)));
     ev->eta_axle = efficiency_of(ev->P_axle, ev->P_in_axle);
 }
 
@@ -219,7 +227,7 @@ static void efficiency(const hg_inputs *u, const double *y, hg_dyn_eval *ev)
  * within a cycle (docs/physics.md §10.8); zero for tooth data of one torque level. */
 static double torque_filter_rate(const hg_dyn_params *p, const double *y, const hg_dyn_eval *ev)
 {
-    double w = fmax(fabs(y[HG_Y_W_P]), KM_FILTER_W_MIN);
+    double w = fabs(y[HG_Y_W_P]) > KM_FILTER_W_MIN ? fabs(y[HG_Y_W_P]) : KM_FILTER_W_MIN;
     double tau = KM_FILTER_CYCLES * 6.283185307179586 / (p->gear->N_p * w);
     if (p->gear->n_levels < 2) return 0.0;
     return (fabs(ev->W_t) * ev->mesh.R_p - y[HG_Y_T_KM]) / tau;

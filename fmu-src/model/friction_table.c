@@ -25,7 +25,8 @@ void hg_ft_key_for(double w_p, double ratio, double T_bath, double W_t, hg_ft_ke
 /* The speed window of a key speed [rad/s]: relative, with an absolute floor. */
 static double speed_window(double key_w)
 {
-    return HG_FT_SPEED_DRIFT * fmax(fabs(key_w), HG_FT_SPEED_MIN);
+    double w = fabs(key_w);
+    return HG_FT_SPEED_DRIFT * (w > HG_FT_SPEED_MIN ? w : HG_FT_SPEED_MIN); /* fmax, inline */
 }
 
 static int speed_covers(double key_w_p, double w_p)
@@ -146,7 +147,8 @@ static void make_stencil(double psi, double W, double W_max, stencil *st)
     i0 = (int)u;
     if (i0 >= HG_FT_N_PSI) i0 = HG_FT_N_PSI - 1;
     weights(u - i0, st->wi);
-    v = v > 0.0 ? fmin(v, HG_FT_N_L - 1.0) : 0.0; /* mu held beyond the load range (and NaN) */
+    v = v > 0.0 ? (v < HG_FT_N_L - 1.0 ? v : HG_FT_N_L - 1.0)
+                : 0.0; /* mu held beyond the load range (and NaN) */
     j0 = (int)v;
     if (j0 > HG_FT_N_L - 2) j0 = HG_FT_N_L - 2;
     weights(v - j0, st->wj);
@@ -183,7 +185,7 @@ static double interpolate(const double a[HG_FT_N_PSI][HG_FT_N_L], const stencil 
 static double held(double d, double window)
 {
     double lim = DRIFT_HOLD * window;
-    return fmax(-lim, fmin(d, lim));
+    return !(d < lim) ? lim : d < -lim ? -lim : d; /* fmax(-lim, fmin(d, lim)) without calls */
 }
 
 double hg_friction_table_F(const hg_friction_table *t, double psi, double W, double w_p,
