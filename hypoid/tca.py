@@ -76,7 +76,7 @@ def _surrogate_comments(set_no, gs, harmonics, contact_harmonics):
         f"{gs.s_roll[1] * mm:.2f} mm, R_y {gs.R_y:.3f} m",
         f"Assumed: alpha_e {deg(sur.ALPHA_E):g} deg, h_mw {sur.H_MW:g} m_mn with "
         f"{100 * sur.PINION_DEPTH_SHARE:.0f} % on the pinion, b_2,eff {sur.B2_EFF:g} b_2,",
-        f"  bump sin^2(pi xi), lengthwise travel {sur.TRAVEL:g} b_2,",
+        f"  bump sin^2(pi xi), lengthwise travel {sur.TRAVEL:g} b_2 from heel to toe,",
         f"  ease-off {sur.DELTA_END * 1e6:.0f} um, e_0 = {sur.E0_SIN[0] * 1e6} um sin(theta) + "
         f"{sur.E0_SIN[1] * 1e6} um sin(2 theta)",
         f"Fit (§10.7): {N_SAMPLES} samples per period, {harmonics} harmonics for k_m, R_p, e_0, ls "
@@ -93,7 +93,7 @@ def loaded_samples(model, torque, n_cycle=N_SAMPLES // 3):
     cycle, the pair series at the 3 n_cycle angles ψ of grid(3 n_cycle), and the unloaded e_u."""
     gs, m = model.gs, tl.loaded_mesh(model, torque, n_theta=n_cycle)
     xi = sur.xi_pairs(gs, m.theta)
-    arm = gs.R_p0 * (1.0 + (xi - 0.5) * sur.TRAVEL * gs.blank.b_2 / gs.R_m1)
+    arm = gs.R_p0 * (1.0 + sur.lengthwise_position(gs, xi) / gs.R_m1)
     samples = {"k_m": m.k_m, "R_p": (m.shares * arm).sum(axis=0),
                "ls": m.shares.reshape(-1)}  # pair 1 at ψ_k is pair k // n of θ_(k mod n)
     samples.update(sur.pair_contact(gs, grid(3 * n_cycle)))

@@ -187,9 +187,9 @@ class LoadedFlank:
     def gaps(self, xi):
         """Unloaded separations of the slices of pairs at ξ [m], shape ξ.shape + (N_SLICES,):
         profile ease-off plus the lengthwise ease-off (η − η_c)²/(2 R_y) about the contact
-        centre η_c = (ξ − ½) TRAVEL b₂ (as R_p of §10.6)."""
+        centre η_c = lengthwise_position(ξ) (as R_p of §10.6; η > 0 towards the heel)."""
         xi = np.asarray(xi, dtype=float)
-        eta_c = (xi - 0.5) * sur.TRAVEL * self.gs.blank.b_2
+        eta_c = sur.lengthwise_position(self.gs, xi)
         lengthwise = (self.eta - eta_c[..., None]) ** 2 / (2.0 * self.gs.R_y)
         return self.profile_gap(xi)[..., None] + lengthwise
 

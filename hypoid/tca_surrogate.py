@@ -18,7 +18,8 @@ B2_EFF = 0.85  # effective face width b_2,eff / b_2 (§10.2)
 C_GAMMA = 2.0e10  # ISO 10300 Method B mesh stiffness per face width, 20 N/(mm·µm), C_F = 1 [N/m²]
 KM_RP2 = 7.55e4  # calibrated invariant k_m,0 R_p0² [N·m/rad] (§8.4)
 DELTA_END = 50e-6  # lengthwise ease-off at the face ends δ_end [m] (§10.4, ASSUMED)
-TRAVEL = 0.5  # lengthwise travel of the contact across the engagement / b_2 (§10.6, ASSUMED)
+TRAVEL = 0.5  # lengthwise travel of the contact across the engagement / b_2 (§10.6, ASSUMED),
+#                from the leading end of the face (the heel) to the trailing end (§10.4, derived)
 E0_SIN = (1.5e-6, 0.3e-6)  # unloaded STE: sine amplitudes of θ and 2θ [m] (§10.6, ASSUMED)
 EPS_TCA_RANGE = (2.0, 2.9)  # clamp of the engagement length in mesh periods (§10.5)
 
@@ -237,9 +238,16 @@ def k_m(gs, theta):
     return 2.0 * gs.k_m0 / gs.eps_TCA * bump(xi_pairs(gs, theta)).sum(axis=0)
 
 
+def lengthwise_position(gs, xi):
+    """Cone distance of the contact from the mean point [m] (heel > 0) at engagement ξ:
+    y = (½ − ξ) TRAVEL b_2, from the heel, the end of the face that meshes first, to the toe
+    (docs/physics.md §10.4, §10.6)."""
+    return (0.5 - np.asarray(xi, dtype=float)) * TRAVEL * gs.blank.b_2
+
+
 def R_p(gs, theta):
-    """Contact radius [m], Σ_j ls_j R_p0 (1 + y_j/R_m1), lengthwise y_j = (ξ_j − ½) TRAVEL b_2."""
-    y = (xi_pairs(gs, theta) - 0.5) * TRAVEL * gs.blank.b_2
+    """Contact radius [m], Σ_j ls_j R_p0 (1 + y_j/R_m1) with y_j = lengthwise_position(ξ_j)."""
+    y = lengthwise_position(gs, xi_pairs(gs, theta))
     return gs.R_p0 * (load_shares(gs, theta) * (1.0 + y / gs.R_m1)).sum(axis=0)
 
 
@@ -306,11 +314,25 @@ def surface_velocities(gs, s):
 
 
 def contact_point_velocity(gs):
-    """Velocity of the contact point in the ellipse frame per unit ω_p [m/(rad/s)]: its lengthwise
-    travel y = (ξ − ½) TRAVEL b_2 (as in R_p) at dξ/dφ_p = N_p/(2π ε_TCA), turned into the frame
-    like the surface velocities. Along the profile the contact moves with the line of action,
-    normal to the flanks, so the frame carries no profile component of it."""
-    lng = TRAVEL * gs.blank.b_2 * gs.blank.N_p / (2.0 * math.pi * gs.eps_TCA)
+    """Velocity of the contact point in space, in the ellipse frame, per unit ω_p [m/(rad/s)]
+    (docs/physics.md §10.4), constant over the path.
+
+    The contact point stays on both flanks, so in space it moves along the flank normal with
+    the flanks' common normal velocity V_⊥ cos α_nD (the line of action of the normal section;
+    no profile component in the tangent plane), and lengthwise. Its cone distance follows
+    lengthwise_position, dy/dφ_p = −TRAVEL b_2 N_p/(2π ε_TCA) (heel to toe). The flank normal
+    leans towards the toe by −sin β_m1 cos α_nD and the trace towards the heel by cos β_m1, so
+
+        v_c,l = dy/dφ_p / cos β_m1 + V_1 sin β_m1 cos² α_nD
+
+    (V_1 = r_m1 per unit ω_p); with no travel (dy = 0) the surfaces are left moving lengthwise
+    past the contact at V_1 sin β_m1 sin² α_nD, the helical-gear limit. Turned into the frame
+    like the surface velocities' lengthwise components. Each surface moves relative to the
+    contact at minus the contact's velocity over that surface (rigid-body kinematics)."""
+    bl = gs.blank
+    dy = -TRAVEL * bl.b_2 * bl.N_p / (2.0 * math.pi * gs.eps_TCA)
+    lng = (dy / math.cos(bl.beta_m1)
+           + gs.r_m1 * math.sin(bl.beta_m1) * math.cos(gs.alpha_nD) ** 2)
     return math.sin(gs.beta_B) * lng, math.cos(gs.beta_B) * lng
 
 

@@ -82,10 +82,11 @@ def test_friction_table_matches_the_direct_solve(fmu_path, friction):
 
 def test_friction_table_leaves_the_standstill_to_the_direct_solve(fmu_path):
     """Torque-driven from 10 rpm with balanced torques, friction brakes the pair to standstill
-    in ~0.25 s. Near standstill ln mu is far from linear in the speed; a table used down to rest
-    left the speed 29 % off the direct solve at 0.2 s (0.0104 against 0.0147 rad/s). Below
-    1 rad/s the direct solve runs, so the coast-down follows it."""
-    common = dict(stop=0.2, dt=0.01, output=["w_p"], load_mode=1, w_p0=10 * math.pi / 30,
+    in ~0.3 s. Near standstill ln mu is far from linear in the speed; a table used down to rest
+    left the speed 29 % off the direct solve near rest (0.0104 against 0.0147 rad/s at 0.2 s with
+    the tooth data of 1c2bb63, whose thinner film braked faster). Below 1 rad/s the direct solve
+    runs, so the coast-down follows it."""
+    common = dict(stop=0.25, dt=0.01, output=["w_p"], load_mode=1, w_p0=10 * math.pi / 30,
                   T_s=100.0, T_w=100.0 * 36 / 13)
     table = run(fmu_path, **common)
     direct = run(fmu_path, friction_table=False, **common)

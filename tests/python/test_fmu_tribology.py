@@ -41,13 +41,13 @@ def fixed_contact(fmu_path, tmp_path_factory):
 def test_default_point_orders_of_magnitude(default):
     """docs/physics.md §12: h_c of a few hundred nm, mu 0.01-0.03, T_c - T_in of 15-45 K (at the worked
     point; the running mesh spans more of the path), efficiency about 99 %. The entrainment
-    relative to the moving contact point (§10.4, u_e about 1.7 m/s) leaves a film near the
-    roughness (lambda about 1.2)."""
+    relative to the moving contact point (§10.4, u_e about 3.2 m/s) leaves a film above the
+    roughness (lambda about 1.6)."""
     h_c, mu, rise = loaded(default, "h_c"), loaded(default, "mu"), loaded(default, "T_c") - 333.15
     assert 300e-9 < np.median(h_c) < 1000e-9
     assert 0.008 < np.median(mu) < 0.03
     assert 8.0 < np.median(rise) < 45.0
-    assert 0.9 < np.median(loaded(default, "lambda")) < 2.5  # viscous-dominated, some asperities
+    assert 1.2 < np.median(loaded(default, "lambda")) < 2.5  # viscous-dominated, some asperities
     assert np.median(loaded(default, "p_h")) == pytest.approx(0.8e9, rel=0.3)
     assert 0.985 < default["eta_cycle"][-1] < 0.996
 
@@ -93,9 +93,7 @@ def test_printed_conductivity_raises_the_second_oils_friction(fmu_path):
 def test_hot_oil_thins_the_film_and_raises_boundary_friction(fmu_path, default):
     hot = run(fmu_path, T_bath=413.15)
     assert np.median(loaded(hot, "h_c")) < 0.5 * np.median(loaded(default, "h_c"))
-    # 8x at 140 degC (10x and more before the entrainment followed the moving contact, whose
-    # thinner film already gives the default point some asperity load)
-    assert np.median(loaded(hot, "F_b")) > 5 * np.median(loaded(default, "F_b"))
+    assert np.median(loaded(hot, "F_b")) > 10 * np.median(loaded(default, "F_b"))
 
 
 def test_isothermal_friction_is_higher_than_thermal(fmu_path, default):

@@ -163,14 +163,97 @@ def test_the_contact_point_velocity_comes_as_a_pair(tmp_path):
         read_gearset(path)
 
 
-def test_surrogate_contact_point_speed_of_set_1():
-    """|v_c| = TRAVEL b_2 N_p ω_p/(2π ε_TCA) by hand: travel 0.5 b_2 of b_2 = 30 mm (Table 1)
-    over ε_TCA = 2.524 mesh cycles of 13 teeth at 2000 rpm: 2.58 m/s (docs/physics.md §10.4),
-    and along the contact frame's axes at β_B = 14.35° to the major axis."""
-    s = tca.surrogate(1).series
+# --- the direction of the contact's lengthwise travel (docs/physics.md §10.4) --------------------
+
+def developed_pitch_plane(beta, alpha):
+    """Unit vectors of the developed pitch plane at a mean point: cone element towards the heel,
+    direction of motion, pitch-plane normal; then the tooth trace (towards the heel), the flank
+    normal and the profile direction of a flank at normal pressure angle alpha."""
+    e_cone, e_circ, e_h = np.eye(3)
+    trace = math.cos(beta) * e_cone + math.sin(beta) * e_circ
+    perp = -math.sin(beta) * e_cone + math.cos(beta) * e_circ
+    normal = math.cos(alpha) * perp + math.sin(alpha) * e_h
+    profile = math.sin(alpha) * perp - math.cos(alpha) * e_h
+    return e_cone, e_circ, trace, normal, profile
+
+
+def test_the_tooth_meshes_first_at_the_end_its_surface_moves_towards():
+    """Pure geometry, no model code: a tooth whose trace leans by β towards the direction of
+    motion at the heel (the surrogate's convention, lengthwise velocity V sin β > 0 towards the
+    heel) reaches a fixed entry line along the cone element with its heel first; its material
+    moves lengthwise towards that end; and this is the lean for which the push on the driving
+    flank has the pinion's thrust out of mesh, the drive side of an automotive axle. The contact
+    lines then sweep the flank from the heel to the toe, so a contact path without bias runs
+    against the surfaces' lengthwise motion."""
+    beta, V, half_face = math.radians(46.0), 6.6, 0.015
+    e_cone, e_circ, trace, _, _ = developed_pitch_plane(beta, math.radians(16.67))
+    ends = {"toe": -half_face * trace, "heel": +half_face * trace}
+    entry = 0.05  # the entry line e_circ . x = entry, ahead of the tooth
+    t_cross = {end: (entry - x @ e_circ) / V for end, x in ends.items()}
+    assert t_cross["heel"] < t_cross["toe"]
+    assert V * e_circ @ trace > 0.0  # material lengthwise velocity points to the heel
+    # the driving flank faces the motion; the mating tooth's push on it points away from the
+    # apex (the automotive drive-side rule, thrust out of mesh) exactly for this lean
+    perp = np.cross([0.0, 0.0, 1.0], trace)
+    facing = perp if perp @ e_circ > 0 else -perp
+    assert (-facing) @ e_cone > 0.0
+    mirrored = math.cos(beta) * e_cone - math.sin(beta) * e_circ  # trace leaning the other way
+    perp = np.cross([0.0, 0.0, 1.0], mirrored)
+    facing = perp if perp @ e_circ > 0 else -perp
+    assert (-facing) @ e_cone < 0.0  # then the toe would lead and the thrust point to the apex
+
+
+@pytest.mark.parametrize("flank", ["drive", "coast"])
+@pytest.mark.parametrize("n", [1, 2, 3])
+def test_the_surrogate_contact_travels_from_heel_to_toe_over_the_flank(n, flank):
+    """The surrogate's path follows that argument on both flanks of every set (forward rotation:
+    the same end meshes first on both flanks): its cone distance falls along the engagement (R_p
+    of §10.6), the pinion surface moves lengthwise relative to the contact towards the heel, and
+    the contact's velocity in space, built in 3-D from the frame of the developed pitch plane,
+    changes its cone distance at exactly dy/dφ_p = −TRAVEL b_2 N_p/(2π ε_TCA) (so v_c, R_p and
+    the path agree)."""
+    from hypoid import tca_loaded as tl
+    from hypoid import tca_surrogate as sur
+    gs = tl.flank_set(sur.TABLE_1[n], flank)
+    bl = gs.blank
+    xi = np.linspace(0.0, 1.0, 11)
+    y = sur.lengthwise_position(gs, xi)
+    assert np.all(np.diff(y) < 0.0) and y[0] > 0.0  # heel (y > 0) first
+    s = sur.roll(gs, xi)
+    (up_x, up_y), _ = sur.surface_velocities(gs, s)
+    vc_x, vc_y = (np.full_like(s, v) for v in sur.contact_point_velocity(gs))
+    e_len = np.array([math.sin(gs.beta_B), math.cos(gs.beta_B)])  # lengthwise in the ellipse frame
+    e_prof = np.array([math.cos(gs.beta_B), -math.sin(gs.beta_B)])
+    up = np.stack([up_x, up_y], axis=-1)
+    vc = np.stack([vc_x, vc_y], axis=-1)
+    assert np.all((up - vc) @ e_len > 0.0)  # pinion surface relative to the contact: to the heel
+    np.testing.assert_allclose(vc @ e_prof, 0.0, atol=1e-15)  # no profile component
+    e_cone, _, trace, normal, profile = developed_pitch_plane(bl.beta_m1, gs.alpha_nD)
+    v_perp = gs.r_m1 * math.cos(bl.beta_m1)
+    dy = -sur.TRAVEL * bl.b_2 * bl.N_p / (2.0 * math.pi * gs.eps_TCA)
+    for k in range(len(xi)):
+        v_c = (vc[k] @ e_len) * trace + v_perp * math.cos(gs.alpha_nD) * normal
+        assert v_c @ e_cone == pytest.approx(dy, rel=1e-12)
+        # the pinion's material at the pitch point does not change its cone distance
+        material = gs.r_m1 * math.sin(bl.beta_m1) * trace + v_perp * (
+            math.sin(gs.alpha_nD) * profile + math.cos(gs.alpha_nD) * normal)
+        assert material @ e_cone == pytest.approx(0.0, abs=1e-15)
+
+
+def test_surrogate_contact_point_velocity_of_set_1_by_hand():
+    """v_c,l = (dy/dt)/cos β_m1 + V_1 sin β_m1 cos² α_nD by hand from the figures of the file's
+    header (r_m1 31.57 mm, β_m1 46°, α_nD 16.67°, ε_TCA 2.524, β_B 14.35°) at 2000 rpm:
+    V_1 = 6.612 m/s, dy/dt = −2.576 m/s (0.5 b_2 = 15 mm over 2.524 of 13 teeth), so
+    v_c,l = −3.708 + 4.365 = 0.657 m/s in the surfaces' lengthwise sense, along the major axis
+    turned by β_B (docs/physics.md §10.4)."""
+    from hypoid import tca_surrogate as sur
     w = 2000 * math.pi / 30
-    by_hand = 0.5 * 0.030 * 13 * w / (2 * math.pi * 2.524)
-    assert by_hand == pytest.approx(2.58, abs=0.005)
-    assert math.hypot(s["vc_x"].mean, s["vc_y"].mean) * w == pytest.approx(by_hand, rel=1e-3)
-    assert math.degrees(math.atan2(s["vc_x"].mean, s["vc_y"].mean)) == pytest.approx(14.35,
-                                                                                   abs=0.01)
+    b, a = math.radians(46.0), math.radians(16.67)
+    dy = -0.5 * 0.030 * 13 * w / (2 * math.pi * 2.524)
+    by_hand = dy / math.cos(b) + 0.03157 * w * math.sin(b) * math.cos(a) ** 2
+    assert by_hand == pytest.approx(0.657, abs=0.002)
+    vc_x, vc_y = sur.contact_point_velocity(sur.GearSet(sur.TABLE_1[1]))
+    assert math.hypot(vc_x, vc_y) * w == pytest.approx(by_hand, rel=2e-3)
+    assert math.degrees(math.atan2(vc_x, vc_y)) == pytest.approx(14.35, abs=0.01)
+    s = tca.surrogate(1).series
+    assert math.hypot(s["vc_x"].mean, s["vc_y"].mean) * w == pytest.approx(by_hand, rel=2e-3)

@@ -260,7 +260,7 @@ def test_set_1_coefficients_match_physics_10_7(set1):
     check_significant(ls.cos, LS_C)
     assert ls.sin[2] == ls.cos[2] == ls.sin[5] == ls.cos[5] == 0.0
     check_significant([rp.mean, rp.sin[0], rp.cos[0], rp.sin[1]],
-                      "21.009e-3 4.25e-6 5.70e-5 1.32e-5")
+                      "21.009e-3 -4.25e-6 -5.70e-5 -1.32e-5")  # heel to toe (§10.6)
     e0 = set1.series["e_0"]
     assert e0.sin[:2] == pytest.approx([1.5e-6, 0.3e-6], rel=1e-12)
     assert np.abs(e0.sin[2:]).max(initial=0) == 0 and np.abs(e0.cos).max() == 0
@@ -281,7 +281,7 @@ def test_set_1_fit_quality_matches_physics_10_7(set1):
 # gear-set files; gear set 2 (shortest no-contact gap) is the worst case for the contact series.
 FIT_TOLERANCE = {"k_m": 1.5e-4, "R_p": 2e-5, "e_0": 1e-12, "ls": 1.5e-3, "R_x": 2e-3, "R_y": 1e-12,
                  "up_x": 2e-3, "up_y": 5e-4, "ug_x": 1e-3, "ug_y": 3e-4,
-                 "vc_x": 1e-12, "vc_y": 1e-12}  # the contact point's travel is uniform
+                 "vc_x": 1e-12, "vc_y": 1e-12}  # the contact point's velocity is uniform
 
 
 @pytest.mark.parametrize("n", SETS)
