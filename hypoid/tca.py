@@ -123,7 +123,9 @@ def loaded_surrogate(set_no, torques=tl.TORQUES, harmonics=CONTACT_HARMONICS,
     gs = sur.GearSet(blank)
     name = (f"Paouris et al. 2016 gear set {set_no} ({blank.N_p}/{blank.N_g}), loaded surrogate "
             "TCA, drive and coast")
-    comments = _surrogate_comments(set_no, gs, harmonics, contact_harmonics)[:4] + [
+    comments = _surrogate_comments(set_no, gs, harmonics, contact_harmonics)[:2] + [
+        "regenerate with `hypoid tca surrogate --all --loaded --out-dir resources/gearsets/loaded`,"
+        " do not edit.", "Units SI (m, N/m, rad); series format in docs/data-files.md.",
         "", "Loaded tooth contact (§10.8): secant k_m, load shares and R_p per pinion torque level;",
         "both flanks (coast: alpha_nC = alpha_e - alpha_lim); e_0 the unloaded transmission error;",
         f"  profile ease-off {tl.DELTA_PROFILE * 1e6:g} um, lengthwise ease-off "

@@ -3,6 +3,8 @@ written by `hypoid tca surrogate --loaded`, read back by the Python reader and t
 interpolates linearly on the filtered transmitted torque and uses the coast series on the back
 flank; checked against the file's own series, with the energy audit closing."""
 
+import pathlib
+
 import numpy as np
 import pytest
 
@@ -180,3 +182,39 @@ def test_import_cli_writes_a_layered_file_and_errors_in_one_line(tmp_path):
     bad = subprocess.run(run[:-2] + [a, "--out", str(out)], capture_output=True, text=True)
     assert bad.returncode == 2 and "a second drive table at 25 N·m" in bad.stderr
     assert "Traceback" not in bad.stderr and len(bad.stderr.strip().splitlines()) == 1
+
+
+# --- the shipped loaded files (resources/gearsets/loaded, docs/physics.md §10.8) -----------------
+
+SHIPPED = pathlib.Path(__file__).parents[2] / "resources" / "gearsets" / "loaded"
+
+
+@pytest.mark.parametrize("n", [1, 2, 3])
+def test_shipped_loaded_files_hold_the_loaded_tca_of_today(n):
+    """Each shipped file is the loaded TCA of its set as the code computes it now: the drive
+    flank's mean k_m at 100 N·m recomputed from the loaded model (one level, not the whole file),
+    the contact point's velocity of both flanks from the surrogate's kinematics (§10.4), and the
+    header names the command that writes it."""
+    from hypoid import tca_loaded as tl
+    from hypoid import tca_surrogate as sur
+    path = SHIPPED / f"gearset{n}.txt"
+    g = read_gearset(path)
+    assert g.torque_levels == tl.TORQUES and g.flanks == tl.FLANKS
+    assert "--all --loaded --out-dir resources/gearsets/loaded" in path.read_text()
+    level = tl.TORQUES.index(100.0) + 1
+    model = tl.LoadedFlank(tl.flank_set(sur.TABLE_1[n], "drive"))
+    k_m = tl.loaded_mesh(model, 100.0, n_theta=tca.N_SAMPLES // 3).k_m.mean()
+    assert g.layers[("drive", level)]["k_m"].mean == pytest.approx(k_m, rel=1e-9)
+    for flank in tl.FLANKS:
+        vc = sur.contact_point_velocity(tl.flank_set(sur.TABLE_1[n], flank))
+        for i, axis in enumerate(("vc_x", "vc_y")):
+            assert g.layers[(flank, 1)][axis].mean == pytest.approx(vc[i], rel=1e-9)
+
+
+def test_shipped_loaded_file_runs_from_the_resources_folder(fmu_path):
+    """gear_set_file relative to the FMU's resources selects a shipped loaded file."""
+    gear = Instance(fmu_path)
+    gear.start({"gear_set_file": "gearsets/loaded/gearset1.txt", "load_mode": "speed",
+                "T_s": 100.0, "speed_rpm": 2000.0})
+    gear.step(0.02)
+    assert gear.get("contact") == 1 and 2.0e8 < gear.get("k_m") < 3.2e8
