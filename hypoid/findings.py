@@ -5,7 +5,7 @@ smaller grid). Efficiency is eta_rms, the RMS over 50 mesh cycles of steady stat
 import numpy as np
 import pandas as pd
 
-from hypoid.tables import (BUILTIN_LUBRICANTS, REFERENCE, calibration_probes, curve,  # noqa: F401
+from hypoid.tables import (BUILTIN_LUBRICANTS, PAPER_EHL, REFERENCE, calibration_probes, curve,  # noqa: F401
                            prepare, resonances, select)
 
 DIP_MIN = 2e-4  # an efficiency dip counts when 0.02 percentage points below the trend

@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from hypoid import cliargs, lossmap, parallel, steady, sweep
 from hypoid.instance import SPEED_KEY
 from hypoid.paths import user_path
+from hypoid.tables import PAPER_EHL
 
 SWAPPED_NAME = "OS265963 with alpha* of OS265962"
 SWAPPED_FILE = "OS265963-alpha-OS265962.txt"
@@ -115,6 +116,13 @@ def points_of(spec, swapped_file):
     return pts
 
 
+def paper_ehl(points):
+    """The points with the paper's EHL choices wherever a point does not set its own: the study
+    reproduces the paper, where the FMU's defaults follow the traction evidence
+    (docs/friction-evidence.md)."""
+    return [{**PAPER_EHL, **p} for p in points]
+
+
 def unique(points):
     from hypoid import results
 
@@ -133,13 +141,13 @@ def run(name, out, fmu_path, scheduler=None, workers=2):
     fmu = parallel.FmuRef(fmu_path)
     swapped = swapped_lubricant(out)
     extra_cols = sorted({k for _, base, _ in spec.extra for k in base})
-    points = unique(sweep.complete(points_of(spec, swapped), extra_cols))
-    traced = sweep.complete([{"gear_set": 1, "lubricant": 1, "T_s": t, SPEED_KEY: n}
-                             for t, n in spec.trace_points], extra_cols)
+    points = unique(sweep.complete(paper_ehl(points_of(spec, swapped)), extra_cols))
+    traced = sweep.complete(paper_ehl([{"gear_set": 1, "lubricant": 1, "T_s": t, SPEED_KEY: n}
+                                       for t, n in spec.trace_points]), extra_cols)
     sweeps = [({k: v for k, v in p.items() if k != SPEED_KEY}, spec.sweep_speeds)
-              for p in sweep.complete([{"gear_set": s, "lubricant": 1, "T_s": t}
-                                       for s in spec.sweep_sets
-                                       for t in spec.sweep_torques], extra_cols)]
+              for p in sweep.complete(paper_ehl([{"gear_set": s, "lubricant": 1, "T_s": t}
+                                                 for s in spec.sweep_sets
+                                                 for t in spec.sweep_torques]), extra_cols)]
     loss_plan = lossmap.Plan(spec.loss_temps, spec.loss_speeds, spec.loss_torques)
     t0 = time.time()
     with parallel.executor(scheduler, workers) as client:

@@ -10,8 +10,12 @@ import pandas as pd
 BUILTIN_LUBRICANTS = {1: "OS265962", 2: "OS265963"}
 # the reference conditions of the paper's figures (other columns at the FMU's start values)
 # (every parameter a study varies besides gear set, lubricant, torque and speed belongs here)
+# the paper's EHL choices spelled out (the FMU's defaults follow the traction evidence instead,
+# docs/friction-evidence.md; friction_preset = paper would override a study's variant of one)
+PAPER_EHL = {"roelands_z": "simple", "shear_pressure": "mean", "Lambda_cap": 0.0,
+             "relaxation": "constant"}
 REFERENCE = {"T_bath": 313.15, "friction_model": "ehl_thermal", "mesh_model": "varying",
-             "k_f": 0.0, "roelands_z": "simple", "e_0_scale": 1.0, "k_m_scale": 1.0}
+             "k_f": 0.0, **PAPER_EHL, "e_0_scale": 1.0, "k_m_scale": 1.0}
 
 
 def prepare(df):

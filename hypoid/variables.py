@@ -11,7 +11,7 @@ from typing import NamedTuple
 
 MODEL_NAME = 'HypoidGearPair'
 MODEL_VERSION = '0.1.0'
-GUID = '{c4777f9f-efd0-5cc4-b77a-35f4bee3d6ce}'
+GUID = '{e9f60043-bcdc-5b1a-b533-511ac4efe862}'
 
 
 class Variable(NamedTuple):
@@ -165,11 +165,11 @@ _TABLE = (
     Variable(name='eta_beta_sigma', vr=128, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='', display_unit=None, start=0.0104, min=1e-06, max=1.0, description='roughness parameter eta_s beta_s sigma_c of Greenwood-Tripp (paper)'),
     Variable(name='sigma_over_beta', vr=129, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='', display_unit=None, start=0.001, min=1e-06, max=1.0, description='composite roughness over asperity tip radius sigma_c/beta_s (assumed, docs/physics.md §5.4)'),
     Variable(name='T_inlet_rise', vr=130, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='K', display_unit=None, start=20.0, min=0.0, max=200.0, description='inlet temperature rise over the bath, T_in = T_bath + T_inlet_rise (paper eq. 15)'),
-    Variable(name='Lambda_cap', vr=131, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='', display_unit=None, start=0.0, min=0.0, max=1.0, description='limiting shear stress coefficient Lambda: the stress at each pressure p approaches Lambda p smoothly (Bair-Winer); 0 switches it off (docs/physics.md §4.5)'),
+    Variable(name='Lambda_cap', vr=131, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='', display_unit=None, start=0.075, min=0.0, max=1.0, description='limiting shear stress coefficient Lambda: the stress at each pressure p approaches Lambda p smoothly (Bair-Winer); 0 switches it off (docs/physics.md §4.5)'),
     Variable(name='k_f', vr=132, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='W/(m.K)', display_unit=None, start=0.0, min=0.0, max=10.0, description="lubricant thermal conductivity, at least 0.01 (a lubricant file's lowest); 0 uses the lubricant file's value (0.18 for both built-in oils; the paper prints 0.80 for OS265963, docs/physics.md §6.5)"),
     Variable(name='hertz_model', vr=133, causality='parameter', variability='fixed', type='Enumeration', enumeration='hertz_model', unit=None, display_unit=None, start=1, min=1, max=2, description='contact ellipse computation (docs/physics.md §2.3)'),
-    Variable(name='roelands_z', vr=134, causality='parameter', variability='fixed', type='Enumeration', enumeration='roelands_z', unit=None, display_unit=None, start=1, min=1, max=2, description='Roelands pressure-viscosity index from alpha* (docs/physics.md §4.3)'),
-    Variable(name='shear_pressure', vr=135, causality='parameter', variability='fixed', type='Enumeration', enumeration='shear_pressure', unit=None, display_unit=None, start=1, min=1, max=3, description='pressure at which the shear viscosity is evaluated (docs/physics.md §4.4)'),
+    Variable(name='roelands_z', vr=134, causality='parameter', variability='fixed', type='Enumeration', enumeration='roelands_z', unit=None, display_unit=None, start=2, min=1, max=2, description='Roelands pressure-viscosity index from alpha* (docs/physics.md §4.3)'),
+    Variable(name='shear_pressure', vr=135, causality='parameter', variability='fixed', type='Enumeration', enumeration='shear_pressure', unit=None, display_unit=None, start=3, min=1, max=3, description='pressure at which the shear viscosity is evaluated (docs/physics.md §4.4)'),
     Variable(name='axle_losses', vr=136, causality='parameter', variability='fixed', type='Enumeration', enumeration='axle_losses', unit=None, display_unit=None, start=1, min=1, max=2, description='which losses the axle has: the mesh only, or the full ledger (churning, bearings, seals)'),
     Variable(name='thermal_model', vr=137, causality='parameter', variability='fixed', type='Enumeration', enumeration='thermal_model', unit=None, display_unit=None, start=1, min=1, max=2, description="oil temperature: the input T_bath, or the sump's state T_oil"),
     Variable(name='ring_d', vr=138, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='m', display_unit='mm', start=0.0, min=0.0, max=2.0, description="outer pitch diameter of the ring gear (the churning disc); 0 = the built-in gear set's value (needed with gear_set_file)"),

@@ -10,13 +10,37 @@
 #define HOLD_STEPS 4          /* steps with held inputs before the integrator may pass a step's
                                  end (hg_stepping_may_pass) */
 
-/* Static equilibrium at speed (docs/physics.md §8.6): shafts twisted by their torques, mesh deflected by
- * W_t / k_m beyond the backlash on the loaded flank. */
+#define START_PASSES 4 /* fixed-point passes of the start's load on its own friction */
+
+/* Spring states carrying the mesh force W_t: the mesh deflected by W_t / k_m beyond the backlash
+ * on the loaded flank, the output shaft by what the gear passes on (R_g W_t plus the gear's loss
+ * torques T_g); under load_mode = speed the governor's integral holds the torque that differs
+ * from T_s i, so that T_w balances the output shaft. */
+static void set_springs(double *y, const hg_dyn_params *p, const hg_vars *v,
+                        const hg_mesh_point *mesh, double W_t, double T_g)
+{
+    double T_2 = W_t * mesh->R_p * p->ratio + T_g;
+    if (p->mesh != HG_MESH_MODEL_RIGID)
+        y[HG_Y_X] = W_t / mesh->k_m + (W_t > 0 ? p->backlash.b : W_t < 0 ? -p->backlash.b : 0.0);
+    if (p->speed_governor) {
+        y[HG_Y_TWIST2] = T_2 / v->k_t2;
+        y[HG_Y_GOV] = p->K_i > 0.0 ? (T_2 - v->T_s * p->ratio) / p->K_i : 0.0;
+    } else {
+        y[HG_Y_TWIST2] = v->T_w / v->k_t2;
+    }
+}
+
+/* Static equilibrium at speed (docs/physics.md §8.6): the input shaft twisted by T_s, the pinion
+ * balanced by the mesh force and its own loss torques, R_p W_t = T_s + T_p (T_p = T_fp plus its
+ * bearings and seals), and the output side by what the gear passes on. The losses depend on the
+ * load: START_PASSES fixed-point passes from the frictionless W_t = T_s / R_p (each changes W_t
+ * by about mu times the last change). */
 void hg_stepping_start(hg_runtime *rt, const hg_setup *s, const hg_vars *v, double t0)
 {
     const hg_dyn_params *p = &s->p;
     hg_mesh_point mesh;
-    double *y = rt->y, T_w = v->load_mode == HG_LOAD_MODE_SPEED ? v->T_s * p->ratio : v->T_w;
+    hg_dyn_eval ev;
+    double *y = rt->y, W_t, T_g = 0.0;
     int k;
     memset(rt, 0, sizeof *rt);
     rt->t = rt->t_u0 = t0;
@@ -30,16 +54,20 @@ void hg_stepping_start(hg_runtime *rt, const hg_setup *s, const hg_vars *v, doub
         mesh.R_p = p->R_p0;
     }
     y[HG_Y_TWIST1] = v->T_s / v->k_t1;
-    y[HG_Y_TWIST2] = T_w / v->k_t2;
-    if (p->mesh != HG_MESH_MODEL_RIGID)
-        y[HG_Y_X] = v->T_s / (mesh.R_p * mesh.k_m) +
-                    (v->T_s > 0 ? p->backlash.b : v->T_s < 0 ? -p->backlash.b : 0.0);
     y[HG_Y_W_S] = y[HG_Y_W_P] = v->w_p0;
     y[HG_Y_W_G] = y[HG_Y_W_W] = v->w_p0 / p->ratio;
-    rt->mode = hg_backlash_mode(y[HG_Y_X], p->backlash.b);
     y[HG_Y_T_OIL] = v->T_oil0;
     y[HG_Y_T_KM] = fabs(v->T_s);
     for (k = 0; k < HG_MAX_PAIRS; k++) rt->T_c_warm[k] = -1.0;
+    W_t = v->T_s / mesh.R_p;
+    for (k = 0; k <= START_PASSES; k++) {
+        set_springs(y, p, v, &mesh, W_t, T_g);
+        rt->mode = hg_backlash_mode(y[HG_Y_X], p->backlash.b);
+        if (k == START_PASSES) break;
+        hg_dyn_evaluate(p, &rt->u0, rt->mode, y, 0, rt->T_c_warm, &ev);
+        W_t = (v->T_s + ev.T_fp + ev.axle.T_p) / mesh.R_p;
+        T_g = ev.T_fg + ev.axle.T_g;
+    }
     rt->eta_cycle = rt->eta_axle_cycle = 1.0;
     rt->restart = 1;
 }

@@ -391,7 +391,8 @@ int main(void)
     /* smooth in the state: third differences of mu along a sequence of bath temperatures
      * 1 mK apart, warm-started like an ODE solver would, and cold-started, show no solver noise
      * (the true third differences are ~1e-14 here); the paper's choices (j = 0, 1) and the FMU's
-     * recommended settings, the stress over the Hertzian field with limiting shear (j = 2, 3) */
+     * defaults (docs/friction-evidence.md), the stress over the Hertzian field with limiting
+     * shear (j = 2, 3) */
     for (j = 0; j < 4; j++) {
         double mu[4] = {0, 0, 0, 0}, worst = 0.0;
         hg_ehl_params q = p;
@@ -409,7 +410,7 @@ int main(void)
             if (i >= 3) worst = fmax(worst, fabs(mu[3] - 3.0 * mu[2] + 3.0 * mu[1] - mu[0]) / o.mu);
         }
         printf("%s, %s starts: max |third difference of mu| / mu at 1 mK: %.1e\n",
-               j >= 2 ? "recommended" : "paper", j & 1 ? "cold" : "warm", worst);
+               j >= 2 ? "defaults" : "paper", j & 1 ? "cold" : "warm", worst);
         CHECK(worst < 1e-8);
     }
     /* limiting shear: the mean stress approaches Lambda p_m from below */

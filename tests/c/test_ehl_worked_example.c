@@ -2,6 +2,7 @@
  * pitch point), both lubricants and the variants, against the reference values within 0.5 %.
  * Contact state: velocities of the pitch row of docs/physics.md §10.4, R_x = 17.65 mm, R_y = 2.25 m,
  * W = 2380 N (load share 0.5 of W_t = 4760 N). */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -38,6 +39,44 @@ static void show(const char *label, const hg_pair_friction *o, const hg_ehl_stat
            "F_f %6.2f N  n_eval %d\n",
            label, o->h_c * 1e9, o->lambda, o->T_c - C0, s->dT_flash, s->dT_oil, o->mu, o->F_f,
            s->n_eval);
+}
+
+/* mu of both oils at this point for each EHL choice and limiting shear coefficient: the table
+ * of docs/friction-evidence.md. The limiting shear bounds the stress, so with the defaults'
+ * choices it moves mu by less than 20 % between Lambda = 0.05 and 0.1 (9 % and 17 %). */
+static void print_choices(const hg_ehl_params *p0, const hg_lubricant *l62,
+                          const hg_lubricant *l63, const hg_pair_contact *c)
+{
+    static const char *names[6] = {"Z simple, p_m (paper)", "Z simple, p_max",
+                                   "Z simple, Hertz field", "Z exact, p_m",
+                                   "Z exact, Hertz field (defaults)", "Z simple, p_m, TTS"};
+    static const int z[6] = {HG_Z_SIMPLE, HG_Z_SIMPLE, HG_Z_SIMPLE, HG_Z_EXACT, HG_Z_EXACT,
+                             HG_Z_SIMPLE};
+    static const int sp[6] = {HG_SHEAR_P_MEAN, HG_SHEAR_P_MAX, HG_SHEAR_P_HERTZ,
+                              HG_SHEAR_P_MEAN, HG_SHEAR_P_HERTZ, HG_SHEAR_P_MEAN};
+    static const double Lambda[4] = {0.0, 0.05, 0.075, 0.1};
+    int i, j, k;
+    for (i = 0; i < 6; i++) {
+        double mu[4][2];
+        printf("| %s |", names[i]);
+        for (j = 0; j < 4; j++) {
+            for (k = 0; k < 2; k++) {
+                hg_ehl_params q = *p0;
+                hg_pair_friction o;
+                double warm = NAN;
+                q.roelands_Z = z[i];
+                q.shear_pressure = sp[i];
+                q.relaxation = i == 5 ? HG_RELAX_TTS : HG_RELAX_CONSTANT;
+                q.Lambda_cap = Lambda[j];
+                hg_ehl_pair(&q, k ? l63 : l62, c, &warm, &o);
+                mu[j][k] = o.mu;
+            }
+            printf(" %.4f / %.4f |", mu[j][0], mu[j][1]);
+        }
+        printf("\n");
+        if (i == 4)
+            for (k = 0; k < 2; k++) CHECK(fabs(mu[3][k] / mu[1][k] - 1.0) < 0.2);
+    }
 }
 
 int main(void)
@@ -181,10 +220,11 @@ int main(void)
     CHECK_CLOSE(1.0 - 2.0 * o.F_f * o.V_s / (100.0 * 2000.0 * 2.0 * HG_PI / 60.0), 0.993, 0.001,
                 0);
 
-    /* the recommended settings (docs/friction-evidence.md): Z exact, the shear stress
-     * over the Hertzian field, limiting shear 0.075. At this point (SRR 0.62, p_max 0.84 GPa,
-     * 60 degC inlet) published ball-on-disc traction of gear oils lies at 0.02-0.06: both oils
-     * land inside, above the paper's choices */
+    /* the FMU's defaults (docs/friction-evidence.md): Z exact, the shear stress over the
+     * Hertzian field, limiting shear 0.075. At this point (SRR 0.62, p_max 0.84 GPa, 60 degC
+     * inlet) the FZG gear-test correlation of ISO/TR 14179-2 gives a mean mesh friction of
+     * 0.023-0.031 for a mineral oil: both oils land above the paper's choices and at or above
+     * that band's lower end */
     {
         hg_ehl_params q = p;
         const hg_lubricant *oils[2] = {&l62, &l63};
@@ -196,10 +236,11 @@ int main(void)
         for (j = 0; j < 2; j++) {
             warm = NAN;
             hg_ehl_pair_ex(&q, oils[j], &c, &warm, &o, &s);
-            show(j ? "OS265963 recommended" : "OS265962 recommended", &o, &s);
+            show(j ? "OS265963 defaults" : "OS265962 defaults", &o, &s);
             CHECK(o.mu > 0.02 && o.mu < 0.06 && o.mu > 1.5 * paper_mu[j]);
         }
     }
+    print_choices(&p, &l62, &l63, &c);
 
     CHECK_DONE();
 }

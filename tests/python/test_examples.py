@@ -5,6 +5,7 @@ lossy gear)."""
 
 import os
 import pathlib
+import re
 import subprocess
 import sys
 
@@ -19,7 +20,9 @@ FIGURES = ("launch", "tipout", "sweep", "lossmap", "drive_coast")
 
 def check_output(text, out_dir):
     assert "tip-out: contact 1 -> -1" in text
-    assert "drive: eta_cycle = 99." in text and "coast: eta_cycle = 99." in text
+    for side in ("drive", "coast"):  # a lossy gear: 97-99.9 % (docs/friction-evidence.md)
+        eta = float(re.search(side + r": eta_cycle = ([0-9.]+) %", text).group(1))
+        assert 97.0 < eta < 99.9, (side, eta)
     for name in FIGURES:
         assert (out_dir / f"{name}.png").stat().st_size > 1000, name
 

@@ -31,10 +31,11 @@ def tables(fmu_path, tmp_path_factory):
     pts += sweep.grid({**g1, "T_s": 100, "lubricant_file": swapped}, {"speed_rpm": LUB_SPEEDS})
     pts += sweep.grid(g1, {"T_s": [*T_LOW, *T_HIGH], "speed_rpm": MODE2_SPEEDS + MODE3_SPEEDS})
     pts += sweep.grid({"lubricant": 1, "T_s": 100}, {"gear_set": [2, 3], "speed_rpm": SET_SPEEDS})
-    pts = study.unique(sweep.complete(pts))
+    pts = study.unique(sweep.complete(study.paper_ehl(pts)))  # the paper's EHL choices
     sweeps = [({k: v for k, v in p.items() if k != "speed_rpm"}, s)
-              for p, s in ((sweep.complete([{**g1, "T_s": 50}])[0], JUMP_SPEEDS),
-                           (sweep.complete([{**g1, "T_s": 100}])[0], PAPER_JUMP_SPEEDS))]
+              for p, s in ((sweep.complete(study.paper_ehl([{**g1, "T_s": 50}]))[0], JUMP_SPEEDS),
+                           (sweep.complete(study.paper_ehl([{**g1, "T_s": 100}]))[0],
+                            PAPER_JUMP_SPEEDS))]
     settings, fmu = steady.Settings(), parallel.FmuRef(fmu_path)
     with parallel.executor(workers=2) as client:  # both cores: ~10 s CPU each
         cont, points = sweep.execute([sweep.SweepsPlan(sweeps, out, fmu, settings),
