@@ -63,20 +63,15 @@ static const hg_sun_api API = {
     .root_return = ARK_ROOT_RETURN,
     .normal = ARK_NORMAL,
     .can_pass = 0,
-    .reinit = reinit,
-    .set_max_step = ERKStepSetMaxStep,
-    .set_init_step = ERKStepSetInitStep,
-    .set_stop_time = ERKStepSetStopTime,
-    .evolve = ERKStepEvolve,
-    .root_info = ERKStepGetRootInfo,
+    .reinit = reinit, /* ERKStepReInit with the right-hand side */
+    .reinit_name = "ERKStepReInit",
+    HG_SUN_FN(set_max_step, ERKStepSetMaxStep),
+    HG_SUN_FN(set_init_step, ERKStepSetInitStep),
+    HG_SUN_FN(set_stop_time, ERKStepSetStopTime),
+    HG_SUN_FN(evolve, ERKStepEvolve),
+    HG_SUN_FN(root_info, ERKStepGetRootInfo),
     .num_steps = ERKStepGetNumSteps,
     .num_rhs_evals = ERKStepGetNumRhsEvals,
-    .reinit_name = "ERKStepReInit",
-    .set_max_step_name = "ERKStepSetMaxStep",
-    .set_init_step_name = "ERKStepSetInitStep",
-    .set_stop_time_name = "ERKStepSetStopTime",
-    .evolve_name = "ERKStepEvolve",
-    .root_info_name = "ERKStepGetRootInfo",
 };
 
 static void *create(const hg_problem *pb, const hg_solver_options *opt, char *err, size_t errlen)

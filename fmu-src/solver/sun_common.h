@@ -47,6 +47,9 @@ typedef struct {
         *evolve_name, *root_info_name;
 } hg_sun_api;
 
+/* One integrator function and the name its failures give: .op = fn, .op_name = "fn" */
+#define HG_SUN_FN(op, fn) .op = fn, .op##_name = #fn
+
 struct hg_sun {
     const hg_sun_api *api;
     void *mem; /* the integrator's memory */
