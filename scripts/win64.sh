@@ -7,7 +7,8 @@
 #                            (the gear's and the example vehicle's) and the C tests; prints the
 #                            vehicle DLL's path and, on its last line, the gear DLL's (setup.sh
 #                            puts them into the FMUs)
-#   scripts/win64.sh test    the DLL's exports and imports (objdump), the C unit tests and the C
+#   scripts/win64.sh test    rebuilds the DLLs and FMUs where sources changed, then the DLL's
+#                            exports and imports (objdump), the C unit tests and the C
 #                            host (tests/host) under Wine on build/HypoidGearPair.fmu, and the
 #                            linux64/win64 agreement (tests/portability/compare.py); the vehicle
 #                            FMU's DLL: exports, imports and the same output bits as linux64
@@ -88,8 +89,16 @@ check_dll() {
   [ -z "$bad" ] || { echo "win64: FAILED - imports other than KERNEL32/msvcrt: $bad" >&2; exit 1; }
 }
 
+# After a source change the DLLs are rebuilt (incrementally) and the FMUs repacked, so the tests
+# never run stale win64 binaries against a fresh linux64 build.
+refresh() {
+  cmake --build "$win" -j"$(nproc)" >"$win/build.log" 2>&1 || { tail -40 "$win/build.log" >&2; exit 1; }
+  cmake --build build -j"$(nproc)" >/dev/null
+}
+
 run_tests() {
   [ -f "$win/run_fmu.exe" ] || skip "build/win64 was not built (scripts/win64.sh build)"
+  refresh
   local fmu=build/HypoidGearPair.fmu dir=$win/fmu-unzipped
   rm -rf "$dir" && python3 -m zipfile -e "$fmu" "$dir"
   [ -f "$dir/binaries/win64/HypoidGearPair.dll" ] \
