@@ -63,14 +63,16 @@ static void flank_loads(const hg_dyn_params *p, int mode, double x, hg_dyn_eval 
 /* Mesh stiffness, radii, transmission error, f(x), x' and the flank loads. */
 static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn_eval *ev)
 {
-    double w_p = y[HG_Y_W_P];
+    double w_p = y[HG_Y_W_P], theta = p->gear->N_p * y[HG_Y_PHI_P];
     if (p->mesh == HG_MESH_MODEL_VARYING) {
         ev->flank = active_flank(p, mode, y[HG_Y_X]);
-        if (p->phase) /* a single-series set, tabulated */
-            hg_phase_table_mesh(p->phase, p->gear->N_p * y[HG_Y_PHI_P], &ev->mesh);
-        else
-            hg_gearset_mesh(p->gear, ev->flank, y[HG_Y_T_KM], p->gear->N_p * y[HG_Y_PHI_P],
-                            &ev->mesh);
+        if (p->phase) { /* a single-series set, tabulated */
+            hg_phase_table_locate(theta, &ev->cell);
+            ev->located = 1;
+            hg_phase_table_mesh(p->phase, &ev->cell, &ev->mesh);
+        } else {
+            hg_gearset_mesh(p->gear, ev->flank, y[HG_Y_T_KM], theta, &ev->mesh);
+        }
         ev->f = hg_backlash_f(&p->backlash, y[HG_Y_X], mode);
         ev->Phi = hg_backlash_potential(&p->backlash, y[HG_Y_X], mode);
     } else {
@@ -87,45 +89,65 @@ static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn
     flank_loads(p, mode, y[HG_Y_X], ev);
 }
 
+/* The pairs' geometry at mesh angle theta and, with contact data, their friction forces
+ * ev->pair[k].F_f: from the tables in the right-hand side (the friction table needs no radii nor
+ * contact point velocities), else from the series and the friction model. */
+static void pair_forces(const hg_dyn_params *p, const double *y, int with_contact,
+                        int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev,
+                        hg_pair_geometry *geo)
+{
+    double w_p = y[HG_Y_W_P], w_g = y[HG_Y_W_G], W = ev->W_drive + ev->W_coast;
+    double theta = p->gear->N_p * y[HG_Y_PHI_P], F[HG_MAX_PAIRS];
+    int k, tabulated = p->table && !all_pairs;
+    if (p->phase && with_contact && !all_pairs) { /* the right-hand side: the tables */
+        if (!ev->located) hg_phase_table_locate(theta, &ev->cell);
+        ev->located = 1;
+        hg_phase_table_pairs(p->phase, &ev->cell, !tabulated, geo);
+    } else {
+        hg_gearset_pairs(p->gear, ev->flank, y[HG_Y_T_KM], theta, with_contact, geo);
+    }
+    for (k = 0; k < HG_MAX_PAIRS; k++) ev->W_pair[k] = geo->ls[k] * W;
+    if (!with_contact) return;
+    if (tabulated) {
+        hg_friction_table_pairs(p->table, theta, ev->W_pair, w_p, w_g, ev->T_oil, F);
+        for (k = 0; k < HG_MAX_PAIRS; k++) ev->pair[k].F_f = F[k];
+        return;
+    }
+    for (k = 0; k < HG_MAX_PAIRS; k++) {
+        hg_pair_contact c;
+        c.W = ev->W_pair[k];
+        hg_gearset_entrainment(geo->up[k], geo->ug[k], geo->vc[k], w_p, w_g, c.u_p, c.u_g);
+        c.R_x = geo->R_x[k];
+        c.R_y = geo->R_y[k];
+        c.T_bath = ev->T_oil;
+        hg_friction_pair(&p->friction, &c, &T_c_warm[k], &ev->pair[k]);
+    }
+}
+
 /* Friction torques from the sliding direction (docs/physics.md §9.1): T_fp w_p + T_fg w_g = -P_loss,
  * moment arms from the material flank velocities (r x F), entrainment from the surfaces'
- * velocities relative to the moving contact point; the sliding velocity is the same either way.
- * Pairs carry the flank loads, so nothing while the teeth are apart; on the coast flank its own
- * contact data apply (the drive flank's when the file has no coast flank). */
+ * velocities relative to the moving contact point (the friction model's), the sliding velocity
+ * w_p up - w_g ug the same either way. Pairs carry the flank loads, so nothing while the teeth
+ * are apart; on the coast flank its own contact data apply (the drive flank's when the file has
+ * no coast flank). */
 static void pair_friction(const hg_dyn_params *p, const double *y,
                           int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
     int k, with_contact = p->friction.model != HG_FRICTION_MODEL_NONE || all_pairs;
-    double w_p = y[HG_Y_W_P], w_g = y[HG_Y_W_G], W = ev->W_drive + ev->W_coast;
-    double theta = p->gear->N_p * y[HG_Y_PHI_P];
+    double w_p = y[HG_Y_W_P], w_g = y[HG_Y_W_G];
     hg_pair_geometry geo;
-    if (p->phase && with_contact && !all_pairs) /* the right-hand side: the tables */
-        hg_phase_table_pairs(p->phase, theta, &geo);
-    else
-        hg_gearset_pairs(p->gear, ev->flank, y[HG_Y_T_KM], theta, with_contact, &geo);
+    pair_forces(p, y, with_contact, all_pairs, T_c_warm, ev, &geo);
+    if (!with_contact) return;
     for (k = 0; k < HG_MAX_PAIRS; k++) {
-        hg_pair_contact c;
-        double vs_x, vs_y, norm, P_k;
-        ev->W_pair[k] = geo.ls[k] * W;
-        if (!with_contact) continue;
-        c.W = ev->W_pair[k];
-        hg_gearset_entrainment(geo.up[k], geo.ug[k], geo.vc[k], w_p, w_g, c.u_p, c.u_g);
-        c.R_x = geo.R_x[k];
-        c.R_y = geo.R_y[k];
-        c.T_bath = ev->T_oil;
-        if (p->table && !all_pairs)
-            ev->pair[k].F_f = hg_friction_table_F(p->table, hg_gearset_pair_phase(theta, k), c.W,
-                                                  w_p, w_g, ev->T_oil);
-        else
-            hg_friction_pair(&p->friction, &c, &T_c_warm[k], &ev->pair[k]);
-        vs_x = c.u_p[0] - c.u_g[0];
-        vs_y = c.u_p[1] - c.u_g[1];
-        norm = ev->pair[k].F_f / sqrt(vs_x * vs_x + vs_y * vs_y + SLIDE_EPS * SLIDE_EPS);
+        double vs_x = w_p * geo.up[k][0] - w_g * geo.ug[k][0];
+        double vs_y = w_p * geo.up[k][1] - w_g * geo.ug[k][1];
+        double norm = ev->pair[k].F_f / sqrt(vs_x * vs_x + vs_y * vs_y + SLIDE_EPS * SLIDE_EPS);
+        double P_k = norm * (vs_x * vs_x + vs_y * vs_y);
         ev->T_fp -= norm * (vs_x * geo.up[k][0] + vs_y * geo.up[k][1]);
         ev->T_fg += norm * (vs_x * geo.ug[k][0] + vs_y * geo.ug[k][1]);
-        P_k = norm * (vs_x * vs_x + vs_y * vs_y);
         ev->P_loss += P_k;
-        if (ev->pair[k].F_f > 0.0) ev->P_visc += P_k * ev->pair[k].F_v / ev->pair[k].F_f;
+        if (ev->pair[k].F_v > 0.0) /* not tabulated (F_v = 0) */
+            ev->P_visc += P_k * ev->pair[k].F_v / ev->pair[k].F_f;
     }
 }
 

@@ -88,6 +88,8 @@ typedef struct {
                           off the varying mesh) */
     double W_pair[HG_MAX_PAIRS];
     hg_pair_friction pair[HG_MAX_PAIRS];
+    int located;      /* cell holds the mesh angle's cell of the phase table */
+    hg_pt_cell cell;
 } hg_dyn_eval;
 
 /* Evaluates everything at state y in contact mode `mode`. Pair quantities are computed when the

@@ -13,6 +13,8 @@
 #define MU_FLOOR 1e-12   /* mu of pairs the friction model leaves without friction */
 #define DRIFT_HOLD 2.0   /* the drift terms are held beyond this many windows of the key */
 
+typedef char psi_nodes_in_thirds[HG_FT_N_PSI % 3 == 0 ? 1 : -1]; /* hg_friction_table_pairs */
+
 void hg_ft_key_for(double w_p, double ratio, double T_bath, double W_t, hg_ft_key *key)
 {
     key->w_p = w_p;
@@ -92,6 +94,21 @@ static double ln_mu(const hg_friction_config *cfg, const hg_pair_point *pt, doub
     return log(fmax(f.F_f / W, MU_FLOOR));
 }
 
+/* The ghost nodes around the table (friction_table.h). */
+static void fill_ghosts(hg_friction_table *t)
+{
+    int i, ch;
+    for (i = 1; i <= HG_FT_N_PSI; i++)
+        for (ch = 0; ch < HG_FT_N_CH; ch++) {
+            double(*row)[HG_FT_N_CH] = t->c[i];
+            row[0][ch] = 2.0 * row[1][ch] - row[2][ch];
+            row[HG_FT_N_L + 1][ch] = 2.0 * row[HG_FT_N_L][ch] - row[HG_FT_N_L - 1][ch];
+        }
+    memcpy(t->c[0], t->c[HG_FT_N_PSI], sizeof t->c[0]);
+    memcpy(t->c[HG_FT_N_PSI + 1], t->c[1], sizeof t->c[0]);
+    memcpy(t->c[HG_FT_N_PSI + 2], t->c[2], sizeof t->c[0]);
+}
+
 void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg,
                              const hg_gearset *g, const hg_ft_key *key)
 {
@@ -100,25 +117,27 @@ void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg
     double w_p = key->w_p, w_g = key->w_g, T = key->T_bath;
     int i, j;
     t->key = *key;
+    t->per_W_max = 1.0 / key->W_max;
     t->usable = 1;
     for (j = 0; j < HG_FT_N_L; j++) {
         double W = key->W_max * exp(LN_W_SPAN * (1.0 - (double)j / (HG_FT_N_L - 1))), warm = NAN;
         for (i = 0; i < HG_FT_N_PSI; i++) { /* along the path: each solve warm-starts the next */
             hg_pair_point pt;
-            double w0;
+            double w0, *e = t->c[i + 1][j + 1];
             hg_gearset_pair_point(g, TWO_PI * i / HG_FT_N_PSI, &pt);
-            t->L[i][j] = ln_mu(cfg, &pt, W, w_p, w_g, T, &warm);
+            e[HG_FT_CH_L] = ln_mu(cfg, &pt, W, w_p, w_g, T, &warm);
             w0 = warm;
-            t->dL_wp[i][j] = (ln_mu(cfg, &pt, W, w_p + dw_p, w_g, T, &warm) -
+            e[HG_FT_CH_WP] = (ln_mu(cfg, &pt, W, w_p + dw_p, w_g, T, &warm) -
                               ln_mu(cfg, &pt, W, w_p - dw_p, w_g, T, &warm)) / (2.0 * dw_p);
-            t->dL_wg[i][j] = (ln_mu(cfg, &pt, W, w_p, w_g + dw_g, T, &warm) -
+            e[HG_FT_CH_WG] = (ln_mu(cfg, &pt, W, w_p, w_g + dw_g, T, &warm) -
                               ln_mu(cfg, &pt, W, w_p, w_g - dw_g, T, &warm)) / (2.0 * dw_g);
-            t->dL_T[i][j] = (ln_mu(cfg, &pt, W, w_p, w_g, T + FD_T, &warm) -
+            e[HG_FT_CH_T] = (ln_mu(cfg, &pt, W, w_p, w_g, T + FD_T, &warm) -
                              ln_mu(cfg, &pt, W, w_p, w_g, T - FD_T, &warm)) / (2.0 * FD_T);
             warm = w0;
-            if (!(t->L[i][j] <= log(HG_FT_MU_MAX))) t->usable = 0;
+            if (!(e[HG_FT_CH_L] <= log(HG_FT_MU_MAX))) t->usable = 0;
         }
     }
+    fill_ghosts(t);
     t->built = 1;
 }
 
@@ -132,53 +151,21 @@ static void weights(double t, double w[4])
     w[3] = 0.5 * (t3 - t2);
 }
 
+/* The phase part of a stencil: the cell's first node i0 (0 ... N_PSI - 1; the stencil's rows
+ * are i0 ... i0 + 3 with the ghosts) and the weights, at u phase nodes. */
 typedef struct {
-    int i[4], j[4];      /* node indices in psi and ln W */
-    double wi[4], wj[4]; /* their weights */
-} stencil;
+    int i0;
+    double w[4];
+} phase_stencil;
 
-static void make_stencil(double psi, double W, double W_max, stencil *st)
+static void phase_stencil_at(double u, phase_stencil *st)
 {
-    double u = psi / TWO_PI * HG_FT_N_PSI;
-    double v = (HG_FT_N_L - 1) * (1.0 + log(W / W_max) / -LN_W_SPAN);
-    int i0, j0, k;
-    u -= HG_FT_N_PSI * floor(u / HG_FT_N_PSI);
-    if (!(u >= 0.0 && u < HG_FT_N_PSI)) u = 0.0; /* a non-finite phase: any node */
-    i0 = (int)u;
-    if (i0 >= HG_FT_N_PSI) i0 = HG_FT_N_PSI - 1;
-    weights(u - i0, st->wi);
-    v = v > 0.0 ? (v < HG_FT_N_L - 1.0 ? v : HG_FT_N_L - 1.0)
-                : 0.0; /* mu held beyond the load range (and NaN) */
-    j0 = (int)v;
-    if (j0 > HG_FT_N_L - 2) j0 = HG_FT_N_L - 2;
-    weights(v - j0, st->wj);
-    for (k = 0; k < 4; k++) {
-        st->i[k] = (i0 - 1 + k + HG_FT_N_PSI) % HG_FT_N_PSI;
-        st->j[k] = j0 - 1 + k;
-    }
-    /* the end cells: ghost nodes on the line through the last two, a_-1 = 2 a_0 - a_1 */
-    if (j0 == 0) {
-        st->j[0] = 1;
-        st->wj[1] += 2.0 * st->wj[0];
-        st->wj[0] = -st->wj[0];
-    }
-    if (j0 == HG_FT_N_L - 2) {
-        st->j[3] = HG_FT_N_L - 2;
-        st->wj[2] += 2.0 * st->wj[3];
-        st->wj[3] = -st->wj[3];
-    }
-}
-
-static double interpolate(const double a[HG_FT_N_PSI][HG_FT_N_L], const stencil *st)
-{
-    double v = 0.0;
-    int k, l;
-    for (k = 0; k < 4; k++) {
-        double row = 0.0;
-        for (l = 0; l < 4; l++) row += st->wj[l] * a[st->i[k]][st->j[l]];
-        v += st->wi[k] * row;
-    }
-    return v;
+    u -= HG_FT_N_PSI * floor(u * (1.0 / HG_FT_N_PSI));
+    if (!(u >= 0.0 && u < HG_FT_N_PSI)) u = 0.0; /* the period's end after rounding (the same
+                                                    node), or a non-finite phase: any node */
+    st->i0 = (int)u;
+    if (st->i0 >= HG_FT_N_PSI) st->i0 = HG_FT_N_PSI - 1;
+    weights(u - st->i0, st->w);
 }
 
 /* The drift d of the operating point from the key, held at +-DRIFT_HOLD windows. */
@@ -188,15 +175,61 @@ static double held(double d, double window)
     return !(d < lim) ? lim : d < -lim ? -lim : d; /* fmax(-lim, fmin(d, lim)) without calls */
 }
 
+/* The multipliers of the channels: 1 and the held drifts in w_p, w_g, T_bath. */
+static void drifts(const hg_ft_key *k, double w_p, double w_g, double T_bath,
+                   double d[HG_FT_N_CH])
+{
+    d[HG_FT_CH_L] = 1.0;
+    d[HG_FT_CH_WP] = held(w_p - k->w_p, speed_window(k->w_p));
+    d[HG_FT_CH_WG] = held(w_g - k->w_g, speed_window(k->w_g));
+    d[HG_FT_CH_T] = held(T_bath - k->T_bath, HG_FT_T_DRIFT);
+}
+
+/* ln mu at the phase stencil ps (its first node shifted by `shift` nodes) and pair load W. */
+static double ln_mu_at(const hg_friction_table *t, const phase_stencil *ps, int shift, double W,
+                       const double d[HG_FT_N_CH])
+{
+    double v = (HG_FT_N_L - 1) * (1.0 + log(W * t->per_W_max) * (1.0 / -LN_W_SPAN)), wj[4];
+    double acc[HG_FT_N_CH] = {0.0, 0.0, 0.0, 0.0}, sum = 0.0;
+    int i0 = (ps->i0 + shift) % HG_FT_N_PSI, j0, k, l, ch;
+    v = v > 0.0 ? (v < HG_FT_N_L - 1.0 ? v : HG_FT_N_L - 1.0)
+                : 0.0; /* mu held beyond the load range (and NaN) */
+    j0 = (int)v;
+    if (j0 > HG_FT_N_L - 2) j0 = HG_FT_N_L - 2;
+    weights(v - j0, wj);
+    for (k = 0; k < 4; k++) { /* channel by channel (independent lanes), then the drifts */
+        const double(*e)[HG_FT_N_CH] = t->c[i0 + k] + j0; /* nodes i0 - 1 + k, j0 - 1 ... */
+        double row[HG_FT_N_CH] = {0.0, 0.0, 0.0, 0.0};
+        for (l = 0; l < 4; l++)
+            for (ch = 0; ch < HG_FT_N_CH; ch++) row[ch] += wj[l] * e[l][ch];
+        for (ch = 0; ch < HG_FT_N_CH; ch++) acc[ch] += ps->w[k] * row[ch];
+    }
+    for (ch = 0; ch < HG_FT_N_CH; ch++) sum += d[ch] * acc[ch];
+    return sum;
+}
+
 double hg_friction_table_F(const hg_friction_table *t, double psi, double W, double w_p,
                            double w_g, double T_bath)
 {
-    const hg_ft_key *k = &t->key;
-    stencil st;
+    phase_stencil ps;
+    double d[HG_FT_N_CH];
     if (W < HG_EHL_LOAD_MIN) return 0.0;
-    make_stencil(psi, W, k->W_max, &st);
-    return W * exp(interpolate(t->L, &st) +
-                   interpolate(t->dL_wp, &st) * held(w_p - k->w_p, speed_window(k->w_p)) +
-                   interpolate(t->dL_wg, &st) * held(w_g - k->w_g, speed_window(k->w_g)) +
-                   interpolate(t->dL_T, &st) * held(T_bath - k->T_bath, HG_FT_T_DRIFT));
+    drifts(&t->key, w_p, w_g, T_bath, d);
+    phase_stencil_at(psi * (HG_FT_N_PSI / TWO_PI), &ps);
+    return W * exp(ln_mu_at(t, &ps, 0, W, d));
+}
+
+void hg_friction_table_pairs(const hg_friction_table *t, double theta,
+                             const double W[HG_MAX_PAIRS], double w_p, double w_g, double T_bath,
+                             double F[HG_MAX_PAIRS])
+{
+    phase_stencil ps;
+    double d[HG_FT_N_CH];
+    int k;
+    drifts(&t->key, w_p, w_g, T_bath, d);
+    phase_stencil_at(theta * (HG_FT_N_PSI / (3.0 * TWO_PI)), &ps);
+    for (k = 0; k < HG_MAX_PAIRS; k++)
+        F[k] = W[k] < HG_EHL_LOAD_MIN
+                   ? 0.0
+                   : W[k] * exp(ln_mu_at(t, &ps, k * (HG_FT_N_PSI / 3), W[k], d));
 }

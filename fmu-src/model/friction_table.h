@@ -17,9 +17,13 @@
 #include "model/friction.h"
 #include "model/gearset.h"
 
-#define HG_FT_N_PSI 128 /* phases over the load-share period */
+/* phases over the load-share period: a multiple of 3, so that the three pairs, a third of the
+ * period apart, fall on the same fraction of their cells (hg_friction_table_pairs) */
+#define HG_FT_N_PSI 129
 #define HG_FT_N_L 20    /* loads: W_max 10^(-3 (1 - j / 19)), j = 0 ... 19 (16 left 1.7e-3 of mu
                            at the design point with the moving contact of docs/physics.md §10.4) */
+
+enum { HG_FT_CH_L, HG_FT_CH_WP, HG_FT_CH_WG, HG_FT_CH_T, HG_FT_N_CH };
 
 /* What a table is built for; equal keys give bit-identical tables. */
 typedef struct {
@@ -34,9 +38,12 @@ typedef struct {
     hg_ft_key key;
     int built;
     int usable; /* every tabulated mu is a friction coefficient (<= HG_FT_MU_MAX) */
-    /* ln mu and its derivatives per rad/s of w_p and w_g and per K of T_bath */
-    double L[HG_FT_N_PSI][HG_FT_N_L], dL_wp[HG_FT_N_PSI][HG_FT_N_L];
-    double dL_wg[HG_FT_N_PSI][HG_FT_N_L], dL_T[HG_FT_N_PSI][HG_FT_N_L];
+    double per_W_max; /* 1 / key.W_max [1/N] */
+    /* At phase node i and load node j, [i + 1][j + 1]: ln mu and its derivatives per rad/s of
+     * w_p and w_g and per K of T_bath, side by side (HG_FT_CH_*), so that an interpolation reads
+     * each node once. Around them ghost nodes: the phases wrap (i = -1, N_PSI, N_PSI + 1), the
+     * loads continue on the line through the last two nodes (j = -1, N_L). */
+    double c[HG_FT_N_PSI + 3][HG_FT_N_L + 2][HG_FT_N_CH];
 } hg_friction_table;
 
 /* Relative drift of the pinion speed, drift of the bath temperature [K] and load fraction of
@@ -87,5 +94,11 @@ void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg
  * point leaves the window within a step. */
 double hg_friction_table_F(const hg_friction_table *t, double psi, double W, double w_p,
                            double w_g, double T_bath);
+
+/* The same for the three pairs at mesh angle theta (pair k at psi = (theta + 2 pi k) / 3), pair k
+ * carrying W[k]: F[k]. */
+void hg_friction_table_pairs(const hg_friction_table *t, double theta,
+                             const double W[HG_MAX_PAIRS], double w_p, double w_g, double T_bath,
+                             double F[HG_MAX_PAIRS]);
 
 #endif

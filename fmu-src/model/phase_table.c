@@ -5,99 +5,102 @@
 
 #define TWO_PI 6.283185307179586
 
-static void node(const hg_series *y, const hg_harmonics *h, double out[2])
+#define W_MESH (TWO_PI / HG_PT_N_MESH) /* node spacing in theta */
+#define W_PAIR (TWO_PI / HG_PT_N_PAIR) /* node spacing in psi */
+/* Their reciprocals: the right-hand side multiplies (a division costs it several multiplies) */
+#define PER_W_MESH (HG_PT_N_MESH / TWO_PI)
+#define PER_PERIOD (1.0 / HG_PT_N_PAIR)
+
+/* Value and slope times the node spacing w. */
+static void node(const hg_series *y, const hg_harmonics *h, double w, double out[2])
 {
     out[0] = hg_series_value(y, h);
-    out[1] = hg_series_slope(y, h);
+    out[1] = hg_series_slope(y, h) * w;
 }
 
 void hg_phase_table_build(hg_phase_table *t, const hg_gearset *g)
 {
     const hg_series *y = g->s[HG_FLANK_DRIVE][0].y;
     const hg_series *mesh[HG_PT_N_MESH_CH] = {&y[HG_S_K_M], &y[HG_S_R_P], &g->e_0};
-    const hg_series *pair[HG_PT_N_PAIR_CH] = {&y[HG_S_LS],   &y[HG_S_R_X],   &y[HG_S_R_Y],
-                                              &y[HG_S_UP_X], &y[HG_S_UP_Y], &y[HG_S_UG_X],
-                                              &y[HG_S_UG_Y], &y[HG_S_VC_X], &y[HG_S_VC_Y]};
+    const hg_series *pair[HG_PT_N_PAIR_CH] = {&y[HG_S_LS],   &y[HG_S_UP_X], &y[HG_S_UP_Y],
+                                              &y[HG_S_UG_X], &y[HG_S_UG_Y], &y[HG_S_R_X],
+                                              &y[HG_S_R_Y],  &y[HG_S_VC_X], &y[HG_S_VC_Y]};
     int i, c;
     for (i = 0; i < HG_PT_N_MESH; i++) {
         hg_harmonics h;
-        hg_harmonics_eval(TWO_PI * i / HG_PT_N_MESH, HG_MAX_HARMONICS, &h);
-        for (c = 0; c < HG_PT_N_MESH_CH; c++) node(mesh[c], &h, t->mesh[i][c]);
+        hg_harmonics_eval(W_MESH * i, HG_MAX_HARMONICS, &h);
+        for (c = 0; c < HG_PT_N_MESH_CH; c++) node(mesh[c], &h, W_MESH, t->mesh[i][c]);
     }
     for (i = 0; i < HG_PT_N_PAIR; i++) {
         hg_harmonics h;
-        hg_harmonics_eval(TWO_PI * i / HG_PT_N_PAIR, HG_MAX_HARMONICS, &h);
-        for (c = 0; c < HG_PT_N_PAIR_CH; c++) node(pair[c], &h, t->pair[i][c]);
+        hg_harmonics_eval(W_PAIR * i, HG_MAX_HARMONICS, &h);
+        for (c = 0; c < HG_PT_N_PAIR_CH; c++) node(pair[c], &h, W_PAIR, t->pair[i][c]);
     }
 }
 
-/* Cubic Hermite basis at fraction s of a cell of width w: weights of the two values (a) and
- * the two slopes (b), and of their derivatives (da, db). */
-typedef struct {
-    int i0, i1;
-    double a0, b0, a1, b1, da0, db0, da1, db1;
-} cell;
-
-static void locate(double x, int n, cell *c)
+/* Pair 0's phase theta / 3 in nodes of the pair grid is theta in nodes of the mesh grid. */
+void hg_phase_table_locate(double theta, hg_pt_cell *c)
 {
-    double u = x / TWO_PI * n, s, s2, s3, w = TWO_PI / n;
-    u -= n * floor(u / n);
-    if (!(u >= 0.0 && u < n)) u = 0.0; /* a non-finite angle: any node (the state is lost) */
-    c->i0 = (int)u;
-    if (c->i0 >= n) c->i0 = n - 1;
-    c->i1 = (c->i0 + 1) % n;
-    s = u - c->i0, s2 = s * s, s3 = s2 * s;
+    double u = theta * PER_W_MESH, s, s2, s3;
+    u -= HG_PT_N_PAIR * floor(u * PER_PERIOD);
+    if (!(u >= 0.0 && u < HG_PT_N_PAIR)) u = 0.0; /* the period's end after rounding (the same
+                                                     node), or a non-finite angle: any node (the
+                                                     state is lost) */
+    c->i = (int)u;
+    if (c->i >= HG_PT_N_PAIR) c->i = HG_PT_N_PAIR - 1;
+    s = u - c->i, s2 = s * s, s3 = s2 * s;
     c->a0 = 2.0 * s3 - 3.0 * s2 + 1.0;
-    c->b0 = w * (s3 - 2.0 * s2 + s);
+    c->b0 = s3 - 2.0 * s2 + s;
     c->a1 = 3.0 * s2 - 2.0 * s3;
-    c->b1 = w * (s3 - s2);
-    c->da0 = 6.0 * (s2 - s) / w;
+    c->b1 = s3 - s2;
+    c->da0 = 6.0 * (s2 - s);
     c->db0 = 3.0 * s2 - 4.0 * s + 1.0;
     c->da1 = -c->da0;
     c->db1 = 3.0 * s2 - 2.0 * s;
 }
 
-static double value(const cell *c, const double *p0, const double *p1)
+static double value(const hg_pt_cell *c, const double *p0, const double *p1)
 {
     return c->a0 * p0[0] + c->b0 * p0[1] + c->a1 * p1[0] + c->b1 * p1[1];
 }
 
-static double slope(const cell *c, const double *p0, const double *p1)
+/* d/dtheta of the mesh channel (the slopes are per node spacing). */
+static double slope(const hg_pt_cell *c, const double *p0, const double *p1)
 {
-    return c->da0 * p0[0] + c->db0 * p0[1] + c->da1 * p1[0] + c->db1 * p1[1];
+    return (c->da0 * p0[0] + c->db0 * p0[1] + c->da1 * p1[0] + c->db1 * p1[1]) * PER_W_MESH;
 }
 
-void hg_phase_table_mesh(const hg_phase_table *t, double theta, hg_mesh_point *out)
+void hg_phase_table_mesh(const hg_phase_table *t, const hg_pt_cell *c, hg_mesh_point *out)
 {
-    cell c;
-    locate(theta, HG_PT_N_MESH, &c);
-#define CH(k) t->mesh[c.i0][k], t->mesh[c.i1][k]
-    out->k_m = value(&c, CH(HG_PT_K_M));
-    out->dk_m = slope(&c, CH(HG_PT_K_M));
-    out->R_p = value(&c, CH(HG_PT_R_P));
-    out->e_0 = value(&c, CH(HG_PT_E_0));
-    out->de_0 = slope(&c, CH(HG_PT_E_0));
+    int i0 = c->i % HG_PT_N_MESH, i1 = (c->i + 1) % HG_PT_N_MESH;
+#define CH(k) t->mesh[i0][k], t->mesh[i1][k]
+    out->k_m = value(c, CH(HG_PT_K_M));
+    out->dk_m = slope(c, CH(HG_PT_K_M));
+    out->R_p = value(c, CH(HG_PT_R_P));
+    out->e_0 = value(c, CH(HG_PT_E_0));
+    out->de_0 = slope(c, CH(HG_PT_E_0));
     out->dk_dT = 0.0; /* one torque level */
 #undef CH
 }
 
-void hg_phase_table_pairs(const hg_phase_table *t, double theta, hg_pair_geometry *out)
+void hg_phase_table_pairs(const hg_phase_table *t, const hg_pt_cell *c, int with_contact,
+                          hg_pair_geometry *out)
 {
-    int k;
+    int k, ch, n = with_contact ? HG_PT_N_PAIR_CH : HG_PT_N_SLIDING;
     for (k = 0; k < HG_MAX_PAIRS; k++) {
-        cell c;
-        locate(hg_gearset_pair_phase(theta, k), HG_PT_N_PAIR, &c);
-#define CH(j) t->pair[c.i0][j], t->pair[c.i1][j]
-        out->ls[k] = hg_gearset_share_clamp(value(&c, CH(HG_PT_LS)));
-        out->R_x[k] = value(&c, CH(HG_PT_R_X));
-        out->R_y[k] = value(&c, CH(HG_PT_R_Y));
-        out->up[k][0] = value(&c, CH(HG_PT_UP_X));
-        out->up[k][1] = value(&c, CH(HG_PT_UP_Y));
-        out->ug[k][0] = value(&c, CH(HG_PT_UG_X));
-        out->ug[k][1] = value(&c, CH(HG_PT_UG_Y));
-        out->vc[k][0] = value(&c, CH(HG_PT_VC_X));
-        out->vc[k][1] = value(&c, CH(HG_PT_VC_Y));
-#undef CH
+        int i0 = (c->i + k * HG_PT_N_MESH) % HG_PT_N_PAIR, i1 = (i0 + 1) % HG_PT_N_PAIR;
+        double v[HG_PT_N_PAIR_CH];
+        for (ch = 0; ch < n; ch++) v[ch] = value(c, t->pair[i0][ch], t->pair[i1][ch]);
+        out->ls[k] = hg_gearset_share_clamp(v[HG_PT_LS]);
+        out->up[k][0] = v[HG_PT_UP_X];
+        out->up[k][1] = v[HG_PT_UP_Y];
+        out->ug[k][0] = v[HG_PT_UG_X];
+        out->ug[k][1] = v[HG_PT_UG_Y];
+        if (!with_contact) continue;
+        out->R_x[k] = v[HG_PT_R_X];
+        out->R_y[k] = v[HG_PT_R_Y];
+        out->vc[k][0] = v[HG_PT_VC_X];
+        out->vc[k][1] = v[HG_PT_VC_Y];
     }
     hg_gearset_normalise_shares(out->ls);
 }

@@ -11,22 +11,44 @@
 #include "model/gearset.h"
 
 #define HG_PT_N_MESH 256 /* nodes over one mesh cycle (theta) */
-#define HG_PT_N_PAIR 512 /* nodes over one load-share period (psi) */
+/* Nodes over one load-share period (psi = (theta + 2 pi k) / 3): three times the mesh's, so that
+ * the three pairs' nodes lie on the mesh's nodes and one cell (hg_phase_table_locate) serves the
+ * mesh and all three pairs. */
+#define HG_PT_N_PAIR (3 * HG_PT_N_MESH)
 
 enum { HG_PT_K_M, HG_PT_R_P, HG_PT_E_0, HG_PT_N_MESH_CH };
-enum { HG_PT_LS, HG_PT_R_X, HG_PT_R_Y, HG_PT_UP_X, HG_PT_UP_Y, HG_PT_UG_X, HG_PT_UG_Y,
+/* The pair channels; the first HG_PT_N_SLIDING are those the sliding friction needs when the
+ * friction itself comes from a table (load share and the flank velocities). */
+enum { HG_PT_LS, HG_PT_UP_X, HG_PT_UP_Y, HG_PT_UG_X, HG_PT_UG_Y, HG_PT_R_X, HG_PT_R_Y,
        HG_PT_VC_X, HG_PT_VC_Y, HG_PT_N_PAIR_CH };
+#define HG_PT_N_SLIDING (HG_PT_UG_Y + 1)
 
+/* Each node holds the value and the slope times the node spacing (d/dtheta 2 pi / HG_PT_N_MESH
+ * for the mesh, d/dpsi 2 pi / HG_PT_N_PAIR for the pairs), so that one set of cubic Hermite
+ * weights serves both. */
 typedef struct {
-    double mesh[HG_PT_N_MESH][HG_PT_N_MESH_CH][2]; /* value and d/dtheta at each node */
-    double pair[HG_PT_N_PAIR][HG_PT_N_PAIR_CH][2]; /* value and d/dpsi (ls before clamping) */
+    double mesh[HG_PT_N_MESH][HG_PT_N_MESH_CH][2];
+    double pair[HG_PT_N_PAIR][HG_PT_N_PAIR_CH][2]; /* ls before clamping */
 } hg_phase_table;
+
+/* Where a mesh angle falls: its cell of the pair grid of pair 0 (the mesh's and the other pairs'
+ * follow by whole node offsets) and the cubic Hermite weights at its fraction s of the cell: of
+ * the two values (a), of the two scaled slopes (b), and their derivatives per cell (da, db). */
+typedef struct {
+    int i; /* node of pair 0, 0 ... HG_PT_N_PAIR - 1 */
+    double a0, b0, a1, b1, da0, db0, da1, db1;
+} hg_pt_cell;
 
 /* Tabulates the series of a single-series set g (hg_gearset_single_series; after scaling). */
 void hg_phase_table_build(hg_phase_table *t, const hg_gearset *g);
 
-/* As hg_gearset_mesh and hg_gearset_pairs (with contact data), from the table. */
-void hg_phase_table_mesh(const hg_phase_table *t, double theta, hg_mesh_point *out);
-void hg_phase_table_pairs(const hg_phase_table *t, double theta, hg_pair_geometry *out);
+void hg_phase_table_locate(double theta, hg_pt_cell *c);
+
+/* As hg_gearset_mesh and hg_gearset_pairs, from the table at the cell of theta; the pairs' radii
+ * and contact point velocities only when with_contact is non-zero (the load shares and flank
+ * velocities always). */
+void hg_phase_table_mesh(const hg_phase_table *t, const hg_pt_cell *c, hg_mesh_point *out);
+void hg_phase_table_pairs(const hg_phase_table *t, const hg_pt_cell *c, int with_contact,
+                          hg_pair_geometry *out);
 
 #endif

@@ -123,6 +123,36 @@ static void test_drift_held(const hg_friction_config *cfg, const hg_gearset *g)
     CHECK(hg_friction_table_F(&t, 1.0, W, -0.8, -0.8 / ratio, 313.15) > 0.0);
 }
 
+/* The three pairs at once (hg_friction_table_pairs, the right-hand side's call) give what each
+ * pair gives alone at its own phase (theta + 2 pi k) / 3, over a load-share period and loads
+ * across the table's range and beyond it, with the drifts held. */
+static void test_pairs_at_once(const hg_friction_config *cfg, const hg_gearset *g)
+{
+    static hg_friction_table t;
+    hg_ft_key key;
+    double ratio = (double)g->N_g / g->N_p, w = 2000.0 * RPM, worst = 0.0;
+    int n, k;
+    hg_ft_key_for(w, ratio, 313.15, 4760.0, &key);
+    hg_friction_table_build(&t, cfg, g, &key);
+    for (n = 0; n < 600; n++) {
+        double theta = -3.0 * TWO_PI + 6.0 * TWO_PI * (n + 0.41) / 600.0, F[HG_MAX_PAIRS];
+        double W[HG_MAX_PAIRS] = {3.0 + 15.0 * n, 4760.0 * (n % 7) / 6.0, 9000.0 - 14.0 * n};
+        double wp = w * (1.0 + 0.1 * sin(n)), wg = w / ratio * (1.0 + 0.1 * cos(n));
+        double T = 313.15 + 3.0 * sin(0.3 * n);
+        hg_friction_table_pairs(&t, theta, W, wp, wg, T, F);
+        for (k = 0; k < HG_MAX_PAIRS; k++) {
+            double one = hg_friction_table_F(&t, hg_gearset_pair_phase(theta, k), W[k], wp, wg, T);
+            double scale = hg_friction_table_F(&t, hg_gearset_pair_phase(theta, k), 4760.0, wp,
+                                               wg, T);
+            CHECK((F[k] == 0.0) == (one == 0.0));
+            worst = fmax(worst, fabs(F[k] - one) / scale);
+        }
+    }
+    printf("three pairs at once vs one at a time: worst difference %.1e of the pair friction\n",
+           worst);
+    CHECK(worst < 1e-12);
+}
+
 int main(void)
 {
     hg_gearset g;
@@ -141,6 +171,7 @@ int main(void)
             cfg.ehl.thermal = thermal;
             cfg.lub = &oil[k];
             if (k == 0 && thermal) test_drift_held(&cfg, &g);
+            if (k == 0 && thermal) test_pairs_at_once(&cfg, &g);
             e1 = worst_error(&cfg, &g, 2000.0, 313.15, 4760.0); /* the design point */
             e2 = worst_error(&cfg, &g, 500.0, 253.15, 9000.0);  /* slow, cold, loaded */
             e3 = worst_error(&cfg, &g, 4000.0, 373.15, 1500.0); /* fast, hot, light */

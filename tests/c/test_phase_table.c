@@ -44,16 +44,20 @@ static void compare(const char *path)
     for (j = 0; j < N_POINTS; j++) {
         double theta = 3.0 * TWO_PI * (j + 0.37) / N_POINTS, sum = 0.0;
         hg_mesh_point a, b;
-        hg_pair_geometry p, q;
+        hg_pair_geometry p, q, r;
+        hg_pt_cell cell;
         hg_gearset_mesh(&g, HG_FLANK_DRIVE, 0.0, theta, &a);
-        hg_phase_table_mesh(&t, theta, &b);
+        hg_phase_table_locate(theta, &cell);
+        hg_phase_table_mesh(&t, &cell, &b);
         worst_v = fmax(worst_v, fabs(a.k_m - b.k_m) / amplitude(&y[HG_S_K_M]));
         worst_v = fmax(worst_v, fabs(a.R_p - b.R_p) / amplitude(&y[HG_S_R_P]));
         worst_d = fmax(worst_d, fabs(a.dk_m - b.dk_m) / slope_amplitude(&y[HG_S_K_M]));
         worst_d = fmax(worst_d, fabs(a.de_0 - b.de_0) / slope_amplitude(&g.e_0));
         hg_gearset_pairs(&g, HG_FLANK_COAST, 0.0, theta, 1, &p);
-        hg_phase_table_pairs(&t, theta, &q);
+        hg_phase_table_pairs(&t, &cell, 1, &q);
+        hg_phase_table_pairs(&t, &cell, 0, &r); /* the sliding data alone: the same values */
         for (k = 0; k < HG_MAX_PAIRS; k++) {
+            CHECK(r.ls[k] == q.ls[k] && r.up[k][1] == q.up[k][1] && r.ug[k][0] == q.ug[k][0]);
             sum += q.ls[k];
             worst_pair = fmax(worst_pair, fabs(p.ls[k] - q.ls[k]));
             if (p.ls[k] <= 0.0) continue;
