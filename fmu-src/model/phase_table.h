@@ -17,11 +17,10 @@
 #define HG_PT_N_PAIR (3 * HG_PT_N_MESH)
 
 enum { HG_PT_K_M, HG_PT_R_P, HG_PT_E_0, HG_PT_N_MESH_CH };
-/* The pair channels; the first HG_PT_N_SLIDING are those the sliding friction needs when the
- * friction itself comes from a table (load share and the flank velocities). */
+/* The pair channels: first those the sliding friction needs when the friction itself comes from
+ * a table (load share and flank velocities), then the contact data of the direct solve. */
 enum { HG_PT_LS, HG_PT_UP_X, HG_PT_UP_Y, HG_PT_UG_X, HG_PT_UG_Y, HG_PT_R_X, HG_PT_R_Y,
        HG_PT_VC_X, HG_PT_VC_Y, HG_PT_N_PAIR_CH };
-#define HG_PT_N_SLIDING (HG_PT_UG_Y + 1)
 
 /* Each node holds the value and the slope times the node spacing (d/dtheta 2 pi / HG_PT_N_MESH
  * for the mesh, d/dpsi 2 pi / HG_PT_N_PAIR for the pairs), so that one set of cubic Hermite
