@@ -11,7 +11,7 @@ from typing import NamedTuple
 
 MODEL_NAME = 'HypoidGearPair'
 MODEL_VERSION = '0.1.0'
-GUID = '{e9f60043-bcdc-5b1a-b533-511ac4efe862}'
+GUID = '{d458e08c-3bd1-52ac-b349-a194f218c085}'
 
 
 class Variable(NamedTuple):
@@ -136,7 +136,7 @@ _TABLE = (
     Variable(name='solver', vr=99, causality='parameter', variability='fixed', type='Enumeration', enumeration='solver', unit=None, display_unit=None, start=5, min=1, max=5, description="internal integrator; auto picks the fidelity level's own (README, 'Fidelity levels and solvers')"),
     Variable(name='rtol', vr=100, causality='parameter', variability='fixed', type='Real', enumeration=None, unit=None, display_unit=None, start=1e-06, min=1e-12, max=0.1, description='relative tolerance of the integrator'),
     Variable(name='atol', vr=101, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='m', display_unit=None, start=1e-10, min=1e-16, max=0.0001, description="absolute tolerance on the DTE; the other states' tolerances are scaled from it (angles by 1/R_p, speeds by the highest natural frequency)"),
-    Variable(name='max_step', vr=102, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='s', display_unit=None, start=0.0, min=0.0, max=1.0, description='largest internal step (for newmark an upper bound on its fixed step); 0 = automatic: 1/30 of a mesh period at the current speed for the compliant meshes with CVODE, unlimited for the rigid one and for arkode_erk'),
+    Variable(name='max_step', vr=102, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='s', display_unit=None, start=0.0, min=0.0, max=1.0, description="largest internal step (for newmark an upper bound on its fixed step); 0 = automatic: 1/30 of a mesh period at the current speed for the compliant meshes with CVODE, unlimited for the rigid one; arkode_erk never steps longer than a third of the highest natural mode's period (f_4)"),
     Variable(name='steps_per_mesh_cycle', vr=103, causality='parameter', variability='fixed', type='Integer', enumeration=None, unit=None, display_unit=None, start=50, min=4, max=100000, description='fixed steps per mesh cycle of the newmark solver (at the pinion speed of each communication step)'),
     Variable(name='I_s', vr=104, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='kg.m2', display_unit=None, start=0.014, min=1e-09, max=1000000.0, description='inertia of the input shaft end (paper Table 3)'),
     Variable(name='I_p', vr=105, causality='parameter', variability='fixed', type='Real', enumeration=None, unit='kg.m2', display_unit=None, start=0.014, min=1e-09, max=1000000.0, description='inertia of the pinion'),

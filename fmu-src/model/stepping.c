@@ -7,6 +7,8 @@
 #define WRAP_PERIODS 1024     /* wrap the pinion angle after this many load-share periods */
 #define MAX_AUTO_STEP 1e-3    /* [s] */
 #define STEPS_PER_MODE 8      /* fixed steps per period of the highest natural mode, at least */
+#define ERK_STEPS_PER_MODE 3  /* the explicit method's steps per period of the highest natural
+                                 mode, at least (hg_stepping_step_limit) */
 #define HOLD_STEPS 4          /* steps with held inputs before the integrator may pass a step's
                                  end (hg_stepping_may_pass) */
 
@@ -134,16 +136,23 @@ void hg_stepping_begin(hg_runtime *rt, const hg_setup *s, const hg_inputs *u,
 }
 
 /* Variable-step solvers: the user's max_step, or automatically 1/steps_per_mesh of a mesh period
- * for the compliant meshes with CVODE (docs/physics.md §8.8; none for the rigid one, nor for
- * arkode_erk, whose steps its stability bounds). The fixed-step solver:
+ * for the compliant meshes with CVODE (docs/physics.md §8.8; none for the rigid one). arkode_erk:
+ * never longer than 1/ERK_STEPS_PER_MODE of the period of the highest natural mode (nor than the
+ * user's max_step). Beyond it the method's error estimate of that mode's residue, kept near the
+ * tolerance by the integrator's own errors, drives the step size, and the steps then follow the
+ * last digits of the inputs: two hosts' runs of one co-simulation differed at the tolerance
+ * (docs/model.md, "The explicit method's step limit"). The fixed-step solver:
  * steps_per_mesh_cycle per mesh period, never longer than the user's max_step nor than
  * 1/STEPS_PER_MODE of the period of the highest natural mode, which a fixed step must resolve
  * whatever the speed. */
 double hg_stepping_step_limit(const hg_runtime *rt, const hg_setup *s)
 {
     double f_mesh = fabs(rt->y[HG_Y_W_P]) * s->gear.N_p / HG_TWO_PI, h;
-    if (!s->fixed_step &&
-        (s->max_step > 0.0 || s->p.mesh == HG_MESH_MODEL_RIGID || s->explicit_rk))
+    if (s->explicit_rk) {
+        h = 1.0 / (ERK_STEPS_PER_MODE * s->f_max);
+        return s->max_step > 0.0 ? fmin(h, s->max_step) : h;
+    }
+    if (!s->fixed_step && (s->max_step > 0.0 || s->p.mesh == HG_MESH_MODEL_RIGID))
         return s->max_step;
     h = f_mesh > 0.0 ? 1.0 / (s->steps_per_mesh * f_mesh) : MAX_AUTO_STEP;
     h = fmin(h, MAX_AUTO_STEP);

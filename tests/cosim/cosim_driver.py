@@ -276,7 +276,21 @@ class _Slave:
         self.inst.set_many(values)
 
 
-def run_fmpy(scene, h, algorithm="jacobi", gear_fmu=GEAR_FMU, vehicle_fmu=VEHICLE_FMU):
+def comm_times(n, ns, times="fmpy"):
+    """The communication points t_0 .. t_n and the step sizes h_0 .. h_n-1 [s] a master passes to
+    fmi2DoStep for n steps of ns nanoseconds. fmpy: t_k = (k ns) 1e-9 and the constant h = ns 1e-9;
+    libcosim: its whole nanoseconds converted, t_k = k ns / 1e9, and each step the difference
+    t_k+1 - t_k, which differs from h in the last bits at almost every step."""
+    if times == "fmpy":
+        return np.arange(n + 1) * ns * 1e-9, np.full(n, ns * 1e-9)
+    if times == "libcosim":
+        t = np.array([k * ns / 1e9 for k in range(n + 1)])
+        return t, np.diff(t)
+    raise ValueError(times)
+
+
+def run_fmpy(scene, h, algorithm="jacobi", gear_fmu=GEAR_FMU, vehicle_fmu=VEHICLE_FMU,
+             times="fmpy"):
     """The scene in a fixed-step master written here with hypoid.instance (fmpy's FMU2Slave).
 
     jacobi: libcosim's fixed_step_algorithm call for call: start values in the instantiated
@@ -284,7 +298,8 @@ def run_fmpy(scene, h, algorithm="jacobi", gear_fmu=GEAR_FMU, vehicle_fmu=VEHICL
       set-inputs / get-outputs / transfer passes as there are FMUs, the transferred inputs set,
       exit, get outputs, transfer; then per step
       set the held inputs on both, step both, get outputs, transfer.
-    gauss-seidel: the gear steps first; the vehicle then steps with the gear's new w_w."""
+    gauss-seidel: the gear steps first; the vehicle then steps with the gear's new w_w.
+    times: the communication points and step sizes passed to fmi2DoStep (comm_times)."""
     if algorithm not in ("jacobi", "gauss-seidel"):
         raise ValueError(algorithm)
     wall = time.perf_counter()
@@ -317,24 +332,23 @@ def run_fmpy(scene, h, algorithm="jacobi", gear_fmu=GEAR_FMU, vehicle_fmu=VEHICL
         w_w, t_w = g_out[i_ww], v_out[i_ths]
 
         n = n_steps(scene, h)
-        ns = step_ns(h)
         g_rows, v_rows = [g_out], [v_out]
-        t = np.arange(n + 1) * ns * 1e-9
+        t, steps = comm_times(n, step_ns(h), times)
         t_s = np.empty(n + 1)
         for k in range(n):
-            tk = float(t[k])
+            tk, hk = float(t[k]), float(steps[k])
             t_s[k] = scene.torque(tk)
             gear.fmu.setReal(vr_g_in, [t_s[k], t_w])
             if algorithm == "jacobi":
                 veh.fmu.setReal(vr_v_in, [w_w])
-                gear.fmu.doStep(tk, ns * 1e-9)
-                veh.fmu.doStep(tk, ns * 1e-9)
+                gear.fmu.doStep(tk, hk)
+                veh.fmu.doStep(tk, hk)
                 g_out, v_out = gear.fmu.getReal(vr_g_out), veh.fmu.getReal(vr_v_out)
             else:
-                gear.fmu.doStep(tk, ns * 1e-9)
+                gear.fmu.doStep(tk, hk)
                 g_out = gear.fmu.getReal(vr_g_out)
                 veh.fmu.setReal(vr_v_in, [g_out[i_ww]])
-                veh.fmu.doStep(tk, ns * 1e-9)
+                veh.fmu.doStep(tk, hk)
                 v_out = veh.fmu.getReal(vr_v_out)
             w_w, t_w = g_out[i_ww], v_out[i_ths]
             g_rows.append(g_out)

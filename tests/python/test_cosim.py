@@ -34,6 +34,8 @@ STEPS = (1e-3, 1e-4)
 # rtol 1e-8: with the limiting-shear friction defaults (docs/friction-evidence.md) the launch
 # amplifies the path difference more (container vs fmpy w_p 7.4e-5 at rtol 1e-6, bound 2e-5).
 SCENE = cd.Scene(gear={"solver": 1, "rtol": 1e-8})
+# The same scene with the gear at its defaults (solver = auto: arkode_erk, rtol 1e-6).
+DEFAULTS = cd.Scene()
 
 
 def need(module, why_not=None):
@@ -268,6 +270,38 @@ def test_libcosim_matches_fmpy_master(run, h):
         assert d["rel"] < 1e-4 * coupling[name]["rel"], name
     e_lc, e_own = cd.energy_balance(lc), cd.energy_balance(own)
     assert e_lc["residual"] == pytest.approx(e_own["residual"], abs=1e-6)
+
+
+@pytest.fixture(scope="module")
+def run_defaults(fmus):
+    """run_defaults(host, times): the scene at the gear's defaults and 1 ms steps in libcosim, or
+    in our master passing fmpy's or libcosim's communication times (cd.comm_times); cached."""
+    @functools.cache
+    def go(host, times="fmpy"):
+        if host == "libcosim":
+            need("libcosimpy", cd.libcosim_available)
+            return cd.run_libcosim(DEFAULTS, 1e-3)
+        return cd.run_fmpy(DEFAULTS, 1e-3, times=times)
+    return go
+
+
+def test_the_step_sizes_last_bits_do_not_move_the_defaults(run_defaults):
+    """What the hosts pass differently: libcosim gives each step's length as the difference of
+    its nanosecond communication points in seconds, our master a constant 1 ms (in the last bits
+    they differ at almost every step; the values set are the same bits). At the defaults
+    (arkode_erk) that alone moved w_p by 6.9e-5 of its range, until the explicit method's steps
+    were held to a third of the highest mode's period (stepping.c); now the runs differ by what
+    round-off carries through the model (measured 2e-11; CVODE BDF 5e-12)."""
+    for name, d in cd.difference(run_defaults("fmpy"), run_defaults("fmpy", "libcosim")).items():
+        assert d["rel"] < 1e-9, name
+
+
+def test_libcosim_matches_fmpy_master_at_the_defaults(run_defaults):
+    """libcosim against our master at the gear's defaults (the comparisons above pin CVODE BDF):
+    the same numbers to round-off (measured 2e-11 for w_p; 6.9e-5 before the explicit method's
+    step limit)."""
+    for name, d in cd.difference(run_defaults("libcosim"), run_defaults("fmpy")).items():
+        assert d["rel"] < 1e-9, name
 
 
 def test_container_of_gear_and_vehicle(run, tmp_path):
