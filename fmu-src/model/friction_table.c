@@ -7,8 +7,8 @@
 #define TWO_PI 6.283185307179586
 #define W_FLOOR 1000.0   /* smallest W_max [N] */
 #define LOAD_LOW 0.0625  /* rebuild when W_t falls below this fraction of W_max */
-#define FD_SPEED 2e-3    /* relative step of the speed derivatives */
-#define FD_T 0.1         /* step of the temperature derivative [K] */
+#define FD_SPEED 5e-4    /* relative step of the speed derivatives (forward) */
+#define FD_T 0.025       /* step of the temperature derivative (forward) [K] */
 #define LN_W_SPAN -6.907755278982137 /* ln(1e-3): the load range is [W_max / 1000, W_max] */
 #define MU_FLOOR 1e-12   /* mu of pairs the friction model leaves without friction */
 #define DRIFT_HOLD 2.0   /* the drift terms are held beyond this many windows of the key */
@@ -109,12 +109,31 @@ static void fill_ghosts(hg_friction_table *t)
     memcpy(t->c[HG_FT_N_PSI + 2], t->c[2], sizeof t->c[0]);
 }
 
-void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg,
-                             const hg_gearset *g, const hg_ft_key *key)
+/* The drift derivatives of ln mu at one node e (its channels) by forward differences from
+ * e[HG_FT_CH_L] (steps small enough that their one-sided error, half a step's curvature, stays
+ * a few per cent of the window's own): per rad/s of w_p and of w_g, or, when the gear speed
+ * follows the pinion's (gear_follows: w_g = w_p w_g / w_p), one derivative along that line in
+ * the w_p channel and none in w_g; per K of T. */
+static void drift_slopes(double *e, const hg_ft_key *k, const hg_friction_config *cfg,
+                         const hg_pair_point *pt, double W, int gear_follows, double *warm)
 {
-    double dw_p = FD_SPEED * fmax(fabs(key->w_p), HG_FT_SPEED_MIN);
-    double dw_g = FD_SPEED * fmax(fabs(key->w_g), HG_FT_SPEED_MIN);
-    double w_p = key->w_p, w_g = key->w_g, T = key->T_bath;
+    double L0 = e[HG_FT_CH_L], T = k->T_bath;
+    double dw_p = FD_SPEED * fmax(fabs(k->w_p), HG_FT_SPEED_MIN);
+    double dw_g = FD_SPEED * fmax(fabs(k->w_g), HG_FT_SPEED_MIN);
+    double along = k->w_p != 0.0 ? dw_p * k->w_g / k->w_p : 0.0;
+    if (gear_follows) {
+        e[HG_FT_CH_WP] = (ln_mu(cfg, pt, W, k->w_p + dw_p, k->w_g + along, T, warm) - L0) / dw_p;
+        e[HG_FT_CH_WG] = 0.0;
+    } else {
+        e[HG_FT_CH_WP] = (ln_mu(cfg, pt, W, k->w_p + dw_p, k->w_g, T, warm) - L0) / dw_p;
+        e[HG_FT_CH_WG] = (ln_mu(cfg, pt, W, k->w_p, k->w_g + dw_g, T, warm) - L0) / dw_g;
+    }
+    e[HG_FT_CH_T] = (ln_mu(cfg, pt, W, k->w_p, k->w_g, T + FD_T, warm) - L0) / FD_T;
+}
+
+void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg,
+                             const hg_gearset *g, const hg_ft_key *key, int gear_follows)
+{
     int i, j;
     t->key = *key;
     t->per_W_max = 1.0 / key->W_max;
@@ -125,14 +144,9 @@ void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg
             hg_pair_point pt;
             double w0, *e = t->c[i + 1][j + 1];
             hg_gearset_pair_point(g, TWO_PI * i / HG_FT_N_PSI, &pt);
-            e[HG_FT_CH_L] = ln_mu(cfg, &pt, W, w_p, w_g, T, &warm);
+            e[HG_FT_CH_L] = ln_mu(cfg, &pt, W, key->w_p, key->w_g, key->T_bath, &warm);
             w0 = warm;
-            e[HG_FT_CH_WP] = (ln_mu(cfg, &pt, W, w_p + dw_p, w_g, T, &warm) -
-                              ln_mu(cfg, &pt, W, w_p - dw_p, w_g, T, &warm)) / (2.0 * dw_p);
-            e[HG_FT_CH_WG] = (ln_mu(cfg, &pt, W, w_p, w_g + dw_g, T, &warm) -
-                              ln_mu(cfg, &pt, W, w_p, w_g - dw_g, T, &warm)) / (2.0 * dw_g);
-            e[HG_FT_CH_T] = (ln_mu(cfg, &pt, W, w_p, w_g, T + FD_T, &warm) -
-                             ln_mu(cfg, &pt, W, w_p, w_g, T - FD_T, &warm)) / (2.0 * FD_T);
+            drift_slopes(e, key, cfg, &pt, W, gear_follows, &warm);
             warm = w0;
             if (!(e[HG_FT_CH_L] <= log(HG_FT_MU_MAX))) t->usable = 0;
         }

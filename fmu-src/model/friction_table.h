@@ -84,9 +84,11 @@ void hg_ft_key_next(hg_ft_key *key, int valid, double w_p, double ratio, double 
  * table is not used: the direct solve runs, and fails as it would without the table. */
 #define HG_FT_MU_MAX 10.0
 
-/* Fills the table from the friction model cfg on gear set g. */
+/* Fills the table from the friction model cfg on gear set g: four solves per node, or three when
+ * gear_follows (a rigid mesh: w_g stays w_p w_g / w_p of the key, so one speed derivative along
+ * that line serves, in the w_p channel, and the w_g channel is 0). */
 void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg,
-                             const hg_gearset *g, const hg_ft_key *key);
+                             const hg_gearset *g, const hg_ft_key *key, int gear_follows);
 
 /* F_f [N] of a pair at phase psi carrying W at speeds w_p, w_g and bath temperature T_bath; the
  * drifts from the key enter up to twice the rebuild window (speeds relative to at least

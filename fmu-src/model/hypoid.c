@@ -157,7 +157,8 @@ static int table_stale(hg_model *m, const hg_inputs *u)
 static void build_table(hg_model *m)
 {
     const hg_runtime *rt = &m->rt;
-    hg_friction_table_build(m->table, &m->s.p.friction, &m->s.gear, &rt->ft_key);
+    hg_friction_table_build(m->table, &m->s.p.friction, &m->s.gear, &rt->ft_key,
+                            m->s.p.mesh == HG_MESH_MODEL_RIGID);
     hg_logf(&m->log, "logEvents", "t = %.6f s: friction table built for %.1f rpm, T_oil = "
             "%.2f degC, pair loads up to %.0f N", rt->t, rt->ft_key.w_p * 9.549296585513721,
             rt->ft_key.T_bath - 273.15, rt->ft_key.W_max);
