@@ -1,12 +1,13 @@
 """Benchmark of `hypoid drive-cycle`: a cycle (default WLTC class 3b, cold start at 20 degC) at
-the fast level and at the full level (or --levels, e.g. map), their wall and CPU times,
+the map level (the runner's default), the fast level and the full level (or --levels), their
+wall and CPU times,
 real-time factors and the axle's cycle energy loss and oil-temperature rise, and each level's
 error against the full one.
 Not a timed test: it writes bench/drive_cycle.json and prints a table.
 
-  .venv/bin/python bench/drive_cycle.py                    # WLTC 3b, both levels (full: slow)
+  .venv/bin/python bench/drive_cycle.py                    # WLTC 3b, three levels (full: slow)
   .venv/bin/python bench/drive_cycle.py --until 589        # only its low phase
-  .venv/bin/python bench/drive_cycle.py --levels fast map"""
+  .venv/bin/python bench/drive_cycle.py --levels map fast"""
 
 import argparse
 import json
@@ -45,7 +46,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--cycle", default="wltc3")
     ap.add_argument("--until", type=float, help="stop the cycle at this time [s]")
-    ap.add_argument("--levels", nargs="+", default=["fast", "full"])
+    ap.add_argument("--levels", nargs="+", default=["map", "fast", "full"])
     ap.add_argument("--step", type=float, default=0.05)
     ap.add_argument("--t-amb", type=float, default=20.0)
     ap.add_argument("--t-oil0", type=float, default=20.0)

@@ -35,6 +35,7 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 
 from hypoid import cliargs
+from hypoid.effmap import TEMPERATURES_C
 from hypoid.instance import TABLE, Instance
 from hypoid.paths import user_path
 
@@ -43,14 +44,29 @@ ZERO_C = 273.15
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 DEFAULT_VEHICLE_FMU = ROOT / "build" / "LongitudinalVehicle.fmu"
 
-# The fidelity levels of the gear FMU for vehicle energy (docs/work-precision.md: "vehicle
-# energy, with cold starts": rigid mesh, BDF at rtol 1e-4; map: its pick for warm cycles, the
-# mesh friction from resources/maps, which cover 20-130 degC; full: the paper's model).
+# The fidelity levels of the gear FMU for vehicle energy (docs/work-precision.md, "Which level
+# and settings for which use"): map, its pick for oil at 20 degC or warmer, the rigid mesh with
+# the mesh friction from the full model's efficiency map (resources/maps, 20-130 degC; the
+# default); fast, its pick for cold starts below 20 degC, the rigid mesh with the friction model
+# itself; full: the paper's model.
 LEVELS = {
     "fast": {"mesh_model": "rigid", "friction_model": "ehl_thermal", "rtol": 1e-4},
-    "map": {"mesh_model": "rigid", "friction_model": "map", "rtol": 1e-4},
+    "map": {"mesh_model": "rigid", "friction_model": "map", "rtol": 1e-5},
     "full": {"mesh_model": "varying", "friction_model": "ehl_thermal", "rtol": 1e-6},
 }
+
+# The map level's lowest oil temperature: the built-in maps' (hypoid effmap's grid). Below it the
+# map holds its 20 degC edge, so a cycle that starts or can cool below it runs the fast level.
+MAP_T_MIN = min(TEMPERATURES_C) + ZERO_C
+
+
+def default_level(T_amb, starts, extra):
+    """The drive cycle's level when none is asked for (docs/work-precision.md): map while the oil
+    starts and the air stays in the map's range and a built-in map exists (none for a gear-set
+    or lubricant file of one's own), else fast."""
+    own = {"gear_set_file", "lubricant_file"} & set(extra)
+    return "map" if min(T_amb, *starts) >= MAP_T_MIN and not own else "fast"
+
 
 GEAR_OUT = ["w_w", "w_p", "T_oil", "P_loss", "P_loss_viscous", "P_churn", "P_bearings",
             "P_seals", "P_axle", "P_in_axle", "eta_axle", "E_in", "E_out", "E_friction",
@@ -508,10 +524,12 @@ def _parser():
     ap.add_argument("--vehicle-fmu", type=user_path, default=str(DEFAULT_VEHICLE_FMU),
                     help="the vehicle FMU (default: build/LongitudinalVehicle.fmu)")
     ap.add_argument("--cycle", default="wltc3", help="wltc3 (default), nedc or a CSV file")
-    ap.add_argument("--level", choices=sorted(LEVELS), default="fast",
-                    help="gear FMU fidelity: fast (rigid mesh, rtol 1e-4; default), map (the "
-                         "same with the efficiency map for the mesh friction: ~4x cheaper) or "
-                         "full")
+    ap.add_argument("--level", choices=sorted(LEVELS),
+                    help="gear FMU fidelity: map (rigid mesh, the mesh friction from the "
+                         "efficiency map; the default when the oil and the air are at 20 degC or "
+                         "warmer, the map's range), fast (the same with the friction model "
+                         "itself, ~4x dearer; the default below 20 degC) or full (the paper's "
+                         "model)")
     ap.add_argument("--step", type=float, default=0.05,
                     help="communication step of the co-simulation in s (0.05)")
     ap.add_argument("--t-amb", type=float, default=20.0, help="air temperature in degC (20)")
@@ -553,12 +571,13 @@ def main(argv):
     starts = [("cold", (args.t_oil0 if args.t_oil0 is not None else args.t_amb) + ZERO_C)]
     if not args.no_warm:
         starts.append(("warm", args.warm + ZERO_C))
-    runs = [simulate(cycle, gear_fmu, vehicle_fmu, args.level, T0, T_amb, args.step, extra,
+    level = args.level or default_level(T_amb, [T0 for _, T0 in starts], extra)
+    runs = [simulate(cycle, gear_fmu, vehicle_fmu, level, T0, T_amb, args.step, extra,
                      label, master=args.master, until=args.until) for label, T0 in starts]
     summaries = [summarise(run, cycle, args.step) for run in runs]
     diff = difference(summaries[0], summaries[1]) if len(summaries) == 2 else None
-    meta = {"cycle": cycle.name, "source": cycle.source, "level": args.level,
-            "gear_fmu_settings": LEVELS[args.level], "step_s": args.step,
+    meta = {"cycle": cycle.name, "source": cycle.source, "level": level,
+            "gear_fmu_settings": LEVELS[level], "step_s": args.step,
             "master": args.master, "until_s": args.until,
             "T_amb_degC": args.t_amb, "set": extra, "vehicle": asdict(Vehicle())}
     text = markdown(meta, summaries, diff)

@@ -72,6 +72,7 @@ def short_cycle(tmp_path_factory):
     assert code == 0
     folder = d / "piece"
     s = json.loads((folder / "summary.json").read_text())
+    assert s["meta"]["level"] == "map"  # the default at 20 degC air and oil (and 80 degC warm)
     cold = np.genfromtxt(folder / "cold.csv", delimiter=",", names=True)
     return folder, s, cold
 
@@ -202,8 +203,8 @@ def test_libcosim_and_fmpy_masters_agree_on_the_axle_loss(tmp_path, capsys):
     why = libcosim.why_unavailable()
     if why:
         pytest.skip(f"libcosimpy not usable here: {why}")
-    code, _, err = run_cli(["--master", "libcosim", "--until", "30", "--no-warm", "--out",
-                            str(tmp_path), "--name", "lc"], capsys)
+    code, _, err = run_cli(["--master", "libcosim", "--level", "fast", "--until", "30",
+                            "--no-warm", "--out", str(tmp_path), "--name", "lc"], capsys)
     assert code == 0, err
     lc = json.loads((tmp_path / "lc" / "summary.json").read_text())
     assert lc["meta"]["master"] == "libcosim"
@@ -245,3 +246,39 @@ def test_the_map_level_gives_the_fast_levels_axle_loss():
     for part, e in fast["axle_losses_J"].items():
         assert mapped["axle_losses_J"][part] == pytest.approx(e, rel=0.05 if part == "mesh"
                                                              else 0.01), part
+
+
+def test_the_default_level_is_the_map_level_within_the_maps_range():
+    """hypoid drive-cycle's level when none is given (docs/work-precision.md, vehicle energy):
+    the map level while the air and every start temperature are at or above the built-in maps'
+    lowest temperature, read here from a shipped map, else the fast level (the sump could cool
+    onto the map's held edge), and the fast level for a gear set or lubricant of one's own,
+    which has no built-in map."""
+    text = (drivecycle.ROOT / "resources" / "maps" / "gearset1_OS265962.txt").read_text()
+    line = next(x for x in text.splitlines() if x.startswith("temperatures "))
+    assert drivecycle.MAP_T_MIN == pytest.approx(min(float(x) for x in line.split("#")[0]
+                                                     .split()[1:]))
+    assert drivecycle.default_level(293.15, [293.15, 353.15], {}) == "map"
+    assert drivecycle.default_level(278.15, [293.15], {}) == "fast"
+    assert drivecycle.default_level(293.15, [283.15, 353.15], {}) == "fast"
+    assert drivecycle.default_level(293.15, [293.15], {"gear_set_file": "my_set.txt"}) == "fast"
+    assert drivecycle.default_level(293.15, [293.15], {"lubricant_file": "my_oil.txt"}) == "fast"
+
+
+def test_the_default_level_gives_the_full_levels_axle_loss():
+    """The drive cycle's default level (map) against the full level (the paper's model) over the
+    first 100 s of WLTC class 3 from a cold start, launches included: the axle's loss within 1 %
+    (issue 9's accuracy target; measured +0.84 % here, the launches' transients being the map's
+    worst part, +0.5 % over the whole cycle: docs/axle.md), the mesh part within 3 % (+2.1 %),
+    the others within 0.2 %."""
+    cycle, fmu = drivecycle.builtin_cycle("wltc3"), drivecycle.ROOT / "build" / "HypoidGearPair.fmu"
+    got = {}
+    for level in ("map", "full"):
+        run = drivecycle.simulate(cycle, fmu, drivecycle.DEFAULT_VEHICLE_FMU, level, 293.15,
+                                  293.15, 0.05, {}, level, until=100.0)
+        got[level] = drivecycle.summarise(run, cycle, 0.05)
+    full, mapped = got["full"], got["map"]
+    assert mapped["axle_loss_J"] == pytest.approx(full["axle_loss_J"], rel=0.01)
+    for part, e in full["axle_losses_J"].items():
+        assert mapped["axle_losses_J"][part] == pytest.approx(e, rel=0.03 if part == "mesh"
+                                                             else 0.002), part
