@@ -2,6 +2,7 @@
 the wltp package, the CSV checks (one line, exit 2, nothing written), a short cycle whose energy
 and heat balances close, and the vehicle FMU's road load against its formula."""
 
+import functools
 import json
 import math
 import pathlib
@@ -229,23 +230,31 @@ def test_until_shorter_than_a_step_is_refused(tmp_path, capsys):
     assert code == 2 and "--until" in err
 
 
+@functools.lru_cache(maxsize=None)
+def first_100_s(level):
+    """The summary of the first 100 s of WLTC class 3 from a cold start at a level."""
+    cycle, fmu = drivecycle.builtin_cycle("wltc3"), drivecycle.ROOT / "build" / "HypoidGearPair.fmu"
+    run = drivecycle.simulate(cycle, fmu, drivecycle.DEFAULT_VEHICLE_FMU, level, 293.15, 293.15,
+                              0.05, {}, level, until=100.0)
+    return drivecycle.summarise(run, cycle, 0.05)
+
+
+def check_axle_loss(got, ref, total, mesh, others):
+    """The axle's loss of `got` against `ref` within `total` (relative), its mesh part within
+    `mesh`, the other parts within `others`."""
+    assert got["axle_loss_J"] == pytest.approx(ref["axle_loss_J"], rel=total)
+    for part, e in ref["axle_losses_J"].items():
+        assert got["axle_losses_J"][part] == pytest.approx(e, rel=mesh if part == "mesh"
+                                                           else others), part
+
+
 def test_the_map_level_gives_the_fast_levels_axle_loss():
     """--level map (the mesh friction from the efficiency map) against the fast level (the
     friction model itself) over the first 100 s of WLTC class 3, launches included: the axle's
     loss within 1.5 % (measured -0.4 % with the paper's friction; -1.08 % with the
     limiting-shear defaults, whose mesh loss is ~1.8x larger, on maps made before the default
     solver became arkode_erk), the mesh part within 5 %, the other parts within 1 %."""
-    cycle, fmu = drivecycle.builtin_cycle("wltc3"), drivecycle.ROOT / "build" / "HypoidGearPair.fmu"
-    got = {}
-    for level in ("fast", "map"):
-        run = drivecycle.simulate(cycle, fmu, drivecycle.DEFAULT_VEHICLE_FMU, level, 293.15,
-                                  293.15, 0.05, {}, level, until=100.0)
-        got[level] = drivecycle.summarise(run, cycle, 0.05)
-    fast, mapped = got["fast"], got["map"]
-    assert mapped["axle_loss_J"] == pytest.approx(fast["axle_loss_J"], rel=0.015)
-    for part, e in fast["axle_losses_J"].items():
-        assert mapped["axle_losses_J"][part] == pytest.approx(e, rel=0.05 if part == "mesh"
-                                                             else 0.01), part
+    check_axle_loss(first_100_s("map"), first_100_s("fast"), 0.015, 0.05, 0.01)
 
 
 def test_the_default_level_is_the_map_level_within_the_maps_range():
@@ -271,14 +280,4 @@ def test_the_default_level_gives_the_full_levels_axle_loss():
     (issue 9's accuracy target; measured +0.84 % here, the launches' transients being the map's
     worst part, +0.5 % over the whole cycle: docs/axle.md), the mesh part within 3 % (+2.1 %),
     the others within 0.2 %."""
-    cycle, fmu = drivecycle.builtin_cycle("wltc3"), drivecycle.ROOT / "build" / "HypoidGearPair.fmu"
-    got = {}
-    for level in ("map", "full"):
-        run = drivecycle.simulate(cycle, fmu, drivecycle.DEFAULT_VEHICLE_FMU, level, 293.15,
-                                  293.15, 0.05, {}, level, until=100.0)
-        got[level] = drivecycle.summarise(run, cycle, 0.05)
-    full, mapped = got["full"], got["map"]
-    assert mapped["axle_loss_J"] == pytest.approx(full["axle_loss_J"], rel=0.01)
-    for part, e in full["axle_losses_J"].items():
-        assert mapped["axle_losses_J"][part] == pytest.approx(e, rel=0.03 if part == "mesh"
-                                                             else 0.002), part
+    check_axle_loss(first_100_s("map"), first_100_s("full"), 0.01, 0.03, 0.002)
