@@ -4,6 +4,8 @@ A series over one period of its argument ψ is y(ψ) = mean + Σ_i [sin_i sin(i�
 (docs/data-files.md). Samples are taken on the uniform grid ψ_n = 2πn/N, n = 0 … N−1.
 """
 
+import math
+
 import numpy as np
 from scipy.interpolate import CubicSpline
 
@@ -126,11 +128,14 @@ def resample(psi, y, n=N_SAMPLES):
 
 
 def fit_error(series, psi, y):
-    """(max |series − y|, that divided by max |y|) over the defined (non-NaN) samples."""
+    """(max |series − y|, that divided by max |y|) over the defined (non-NaN) samples; a series
+    that is zero throughout (the surrogate's vc_x) has the relative error 0 when it is fitted
+    exactly."""
     psi, y = np.asarray(psi, dtype=float), np.asarray(y, dtype=float)
     keep = ~np.isnan(y)
     err = float(np.max(np.abs(series(psi[keep]) - y[keep])))
-    return err, err / float(np.max(np.abs(y[keep])))
+    scale = float(np.max(np.abs(y[keep])))
+    return err, err / scale if scale > 0.0 else (0.0 if err == 0.0 else math.inf)
 
 
 def fit_gearset(samples, harmonics, contact_harmonics):

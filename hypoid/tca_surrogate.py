@@ -317,23 +317,27 @@ def contact_point_velocity(gs):
     """Velocity of the contact point in space, in the ellipse frame, per unit ω_p [m/(rad/s)]
     (docs/physics.md §10.4), constant over the path.
 
-    The contact point stays on both flanks, so in space it moves along the flank normal with
-    the flanks' common normal velocity V_⊥ cos α_nD (the line of action of the normal section;
-    no profile component in the tangent plane), and lengthwise. Its cone distance follows
-    lengthwise_position, dy/dφ_p = −TRAVEL b_2 N_p/(2π ε_TCA) (heel to toe). The flank normal
-    leans towards the toe by −sin β_m1 cos α_nD and the trace towards the heel by cos β_m1, so
+    The contact point stays on both flanks, so along the flank normal it moves with their common
+    normal velocity V_⊥ cos α_nD. In the tangent plane it moves only along the line of contact,
+    the major axis y (v_c,x = 0): the contact of involute helicoids, of parallel as of crossed
+    axes, moves across its line of contact exactly as the material does, and a localized contact
+    stays on the instantaneous line, so its travel cannot change the rolling across it. The
+    rolling across the line is then the material's, V sin α_t at the pitch point of a helical
+    pair (ISO/TR 14179-2: v_ΣC = 2 v_t sin α_t). The speed λ along y follows from the cone
+    distance, which follows lengthwise_position, dy/dφ_p = −TRAVEL b_2 N_p/(2π ε_TCA) (heel to
+    toe): the flank normal leans towards the toe by −sin β_m1 cos α_nD, the profile by
+    −sin β_m1 sin α_nD, the trace towards the heel by cos β_m1, so
 
-        v_c,l = dy/dφ_p / cos β_m1 + V_1 sin β_m1 cos² α_nD
+        λ = (dy/dφ_p + V_1 cos² α_nD sin β_m1 cos β_m1) / (sin β_B sin α_nD sin β_m1 + cos β_B cos β_m1)
 
-    (V_1 = r_m1 per unit ω_p); with no travel (dy = 0) the surfaces are left moving lengthwise
-    past the contact at V_1 sin β_m1 sin² α_nD, the helical-gear limit. Turned into the frame
-    like the surface velocities' lengthwise components. Each surface moves relative to the
-    contact at minus the contact's velocity over that surface (rigid-body kinematics)."""
+    (V_1 = r_m1 per unit ω_p). Each surface moves relative to the contact at minus the contact's
+    velocity over that surface (rigid-body kinematics)."""
     bl = gs.blank
+    a, b = gs.alpha_nD, bl.beta_m1
     dy = -TRAVEL * bl.b_2 * bl.N_p / (2.0 * math.pi * gs.eps_TCA)
-    lng = (dy / math.cos(bl.beta_m1)
-           + gs.r_m1 * math.sin(bl.beta_m1) * math.cos(gs.alpha_nD) ** 2)
-    return math.sin(gs.beta_B) * lng, math.cos(gs.beta_B) * lng
+    normal_share = gs.r_m1 * math.cos(a) ** 2 * math.sin(b) * math.cos(b)
+    along_y = math.sin(gs.beta_B) * math.sin(a) * math.sin(b) + math.cos(gs.beta_B) * math.cos(b)
+    return 0.0, (dy + normal_share) / along_y
 
 
 def pair_roll(gs, psi):

@@ -29,8 +29,8 @@ R_P0 = 21.009e-3      # [m] lever arm of the normal force, W_t = T_s / R_p0
 BETA_VB = 34.26       # [deg] base helix angle of the virtual gear: F_bt = W_t cos(beta_vb)
 B_V_EFF = 24.09       # [mm] effective face width of the virtual gear
 RHO_RED = 17.65       # [mm] relative radius of curvature at the pitch point
-U_E_PER_RPM = 3.23 / 2000.0  # [m/s per rpm] load-weighted entrainment relative to the moving
-                             # contact point in the running model (set 1, 2000 rpm: 3.23 m/s)
+U_E_PER_RPM = 3.34 / 2000.0  # [m/s per rpm] load-weighted entrainment relative to the moving
+                             # contact point in the running model (set 1, 2000 rpm: 3.34 m/s)
 ETA_OIL_40C = 85.6    # [mPa.s] both oils at the 40 degC bath: KV40 100 mm^2/s, rho 856 kg/m^3
 RA = 0.2              # [um] arithmetic roughness of each flank (sigma_s = 0.25 um RMS, Gaussian)
 

@@ -208,10 +208,11 @@ def test_the_tooth_meshes_first_at_the_end_its_surface_moves_towards():
 def test_the_surrogate_contact_travels_from_heel_to_toe_over_the_flank(n, flank):
     """The surrogate's path follows that argument on both flanks of every set (forward rotation:
     the same end meshes first on both flanks): its cone distance falls along the engagement (R_p
-    of §10.6), the pinion surface moves lengthwise relative to the contact towards the heel, and
-    the contact's velocity in space, built in 3-D from the frame of the developed pitch plane,
-    changes its cone distance at exactly dy/dφ_p = −TRAVEL b_2 N_p/(2π ε_TCA) (so v_c, R_p and
-    the path agree)."""
+    of §10.6), the pinion surface moves lengthwise relative to the contact towards the heel, the
+    contact moves in the tangent plane only along the line of contact (the major axis y), and
+    its velocity in space, built in 3-D from the frame of the developed pitch plane, changes its
+    cone distance at exactly dy/dφ_p = −TRAVEL b_2 N_p/(2π ε_TCA) (so v_c, R_p and the path
+    agree)."""
     from hypoid import tca_loaded as tl
     from hypoid import tca_surrogate as sur
     gs = tl.flank_set(sur.TABLE_1[n], flank)
@@ -223,16 +224,16 @@ def test_the_surrogate_contact_travels_from_heel_to_toe_over_the_flank(n, flank)
     (up_x, up_y), _ = sur.surface_velocities(gs, s)
     vc_x, vc_y = (np.full_like(s, v) for v in sur.contact_point_velocity(gs))
     e_len = np.array([math.sin(gs.beta_B), math.cos(gs.beta_B)])  # lengthwise in the ellipse frame
-    e_prof = np.array([math.cos(gs.beta_B), -math.sin(gs.beta_B)])
     up = np.stack([up_x, up_y], axis=-1)
     vc = np.stack([vc_x, vc_y], axis=-1)
     assert np.all((up - vc) @ e_len > 0.0)  # pinion surface relative to the contact: to the heel
-    np.testing.assert_allclose(vc @ e_prof, 0.0, atol=1e-15)  # no profile component
+    np.testing.assert_allclose(vc_x, 0.0, atol=1e-15)  # along the line of contact only
     e_cone, _, trace, normal, profile = developed_pitch_plane(bl.beta_m1, gs.alpha_nD)
+    e_y = -math.sin(gs.beta_B) * profile + math.cos(gs.beta_B) * trace  # major axis in 3-D
     v_perp = gs.r_m1 * math.cos(bl.beta_m1)
     dy = -sur.TRAVEL * bl.b_2 * bl.N_p / (2.0 * math.pi * gs.eps_TCA)
     for k in range(len(xi)):
-        v_c = (vc[k] @ e_len) * trace + v_perp * math.cos(gs.alpha_nD) * normal
+        v_c = vc_y[k] * e_y + v_perp * math.cos(gs.alpha_nD) * normal
         assert v_c @ e_cone == pytest.approx(dy, rel=1e-12)
         # the pinion's material at the pitch point does not change its cone distance
         material = gs.r_m1 * math.sin(bl.beta_m1) * trace + v_perp * (
@@ -240,20 +241,63 @@ def test_the_surrogate_contact_travels_from_heel_to_toe_over_the_flank(n, flank)
         assert material @ e_cone == pytest.approx(0.0, abs=1e-15)
 
 
+@pytest.mark.parametrize("travel", [0.5, 0.0, -0.5])
+@pytest.mark.parametrize("n", [1, 2, 3])
+def test_the_pinion_rolls_across_the_line_of_contact_at_the_helical_speed(monkeypatch, n, travel):
+    """The helical limit (docs/physics.md §10.4), with the line of contact at the pinion's own
+    angle atan(tan β_m1 sin α_nD) on the flank: a helical pinion rolls across its line of contact
+    at V_1 sin α_t, tan α_t = tan α_nD / cos β_m1, at the pitch point (the sum velocity
+    v_ΣC = 2 v_t sin α_wt of ISO/TR 14179-2). Independently, in 3-D: the contact point of the
+    pinion's virtual helical gear that keeps its cone distance moves along the transverse line of
+    action (perpendicular to the cone element and to the transverse profile n × e_cone) with the
+    flank's normal velocity; the pinion's material relative to it is V_1 sin α_t long and lies
+    across the line of contact, and the surrogate's rolling across the line agrees with it
+    whatever the travel along the face (which runs along the line). The surrogate of 9ba6806
+    (travel lengthwise, no profile component) rolled at about half of it with no travel."""
+    from functools import cached_property
+    from hypoid import tca_surrogate as sur
+
+    class HelicalLine(sur.GearSet):
+        @cached_property
+        def beta_B(self):
+            return math.atan(math.tan(self.blank.beta_m1) * math.sin(self.alpha_nD))
+
+    monkeypatch.setattr(sur, "TRAVEL", travel)
+    gs = HelicalLine(sur.TABLE_1[n])
+    b, a = gs.blank.beta_m1, gs.alpha_nD
+    (up_x, up_y), _ = sur.surface_velocities(gs, 0.0)
+    vc_x, vc_y = sur.contact_point_velocity(gs)
+    alpha_t = math.atan(math.tan(a) / math.cos(b))
+    assert float(up_x) - vc_x == pytest.approx(gs.r_m1 * math.sin(alpha_t), rel=1e-12)
+    e_cone, e_circ, trace, normal, profile = developed_pitch_plane(b, a)
+    material = gs.r_m1 * e_circ
+    line = np.cross(e_cone, np.cross(normal, e_cone))  # transverse line of action (unnormalised)
+    v_exact = (material @ normal) / (line @ normal) * line
+    w = material - v_exact
+    assert w @ e_cone == pytest.approx(0.0, abs=1e-15)  # both keep the cone distance
+    assert w @ trace == pytest.approx(gs.r_m1 * math.sin(b) * math.sin(alpha_t) ** 2, rel=1e-12)
+    assert np.linalg.norm(w) == pytest.approx(gs.r_m1 * math.sin(alpha_t), rel=1e-12)
+    e_x = math.cos(gs.beta_B) * profile + math.sin(gs.beta_B) * trace
+    e_y = -math.sin(gs.beta_B) * profile + math.cos(gs.beta_B) * trace
+    assert w @ e_y == pytest.approx(0.0, abs=1e-15)  # across the line of contact
+    assert float(up_x) - vc_x == pytest.approx(w @ e_x, rel=1e-12)
+
+
 def test_surrogate_contact_point_velocity_of_set_1_by_hand():
-    """v_c,l = (dy/dt)/cos β_m1 + V_1 sin β_m1 cos² α_nD by hand from the figures of the file's
-    header (r_m1 31.57 mm, β_m1 46°, α_nD 16.67°, ε_TCA 2.524, β_B 14.35°) at 2000 rpm:
-    V_1 = 6.612 m/s, dy/dt = −2.576 m/s (0.5 b_2 = 15 mm over 2.524 of 13 teeth), so
-    v_c,l = −3.708 + 4.365 = 0.657 m/s in the surfaces' lengthwise sense, along the major axis
-    turned by β_B (docs/physics.md §10.4)."""
+    """λ = (dy/dt + V_1 cos² α_nD sin β_m1 cos β_m1)/(sin β_B sin α_nD sin β_m1 + cos β_B cos β_m1)
+    by hand from the figures of the file's header (r_m1 31.57 mm, β_m1 46°, α_nD 16.67°,
+    ε_TCA 2.524, β_B 14.35°) at 2000 rpm: V_1 = 6.612 m/s, dy/dt = −2.576 m/s (0.5 b_2 = 15 mm
+    over 2.524 of 13 teeth), so λ = (−2.576 + 3.032)/0.7241 = 0.630 m/s along the major axis,
+    nothing across it (docs/physics.md §10.4)."""
     from hypoid import tca_surrogate as sur
     w = 2000 * math.pi / 30
-    b, a = math.radians(46.0), math.radians(16.67)
+    b, a, bB = math.radians(46.0), math.radians(16.67), math.radians(14.35)
     dy = -0.5 * 0.030 * 13 * w / (2 * math.pi * 2.524)
-    by_hand = dy / math.cos(b) + 0.03157 * w * math.sin(b) * math.cos(a) ** 2
-    assert by_hand == pytest.approx(0.657, abs=0.002)
+    by_hand = ((dy + 0.03157 * w * math.cos(a) ** 2 * math.sin(b) * math.cos(b))
+               / (math.sin(bB) * math.sin(a) * math.sin(b) + math.cos(bB) * math.cos(b)))
+    assert by_hand == pytest.approx(0.630, abs=0.002)
     vc_x, vc_y = sur.contact_point_velocity(sur.GearSet(sur.TABLE_1[1]))
-    assert math.hypot(vc_x, vc_y) * w == pytest.approx(by_hand, rel=2e-3)
-    assert math.degrees(math.atan2(vc_x, vc_y)) == pytest.approx(14.35, abs=0.01)
+    assert vc_x == 0.0 and vc_y * w == pytest.approx(by_hand, rel=2e-3)
     s = tca.surrogate(1).series
-    assert math.hypot(s["vc_x"].mean, s["vc_y"].mean) * w == pytest.approx(by_hand, rel=2e-3)
+    assert abs(s["vc_x"].mean) < 1e-15
+    assert s["vc_y"].mean * w == pytest.approx(by_hand, rel=2e-3)

@@ -409,7 +409,7 @@ def test_round_trip_surrogate_csv_import(tmp_path, n):
         diff = np.abs(imported.series[key](psi[where]) - s(psi[where])).max()
         # contact series: the import's arc ends at the last tabulated row in contact
         tolerance = (2e-3 if key in CONTACT_SERIES else 2e-4) * np.abs(s(psi)).max()
-        assert diff < tolerance, (key, diff)
+        assert diff <= tolerance, (key, diff)  # <=: the surrogate's vc_x is zero throughout
 
 
 def test_fixture_table_imports_with_small_fit_errors():
