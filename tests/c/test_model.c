@@ -121,40 +121,41 @@ static void test_setup_and_step(void)
     hg_model_free(m);
 }
 
-/* The start-up: the friction solved at every evaluation (no table), so nothing smooths the first
- * steps, on the varying and the rigid mesh with CVODE BDF, the outputs read after every 1 ms
- * step. A start that ignores the friction torques sets the rigid mesh off with an unbalanced
- * torque whose first step BDF resolves poorly: the audit then carries an offset of -3.9e-5 J,
- * 1.9e-6 of the input work after 1 ms (measured on f629043; this check fails with it); from the
- * equilibrium with friction the audit stays within 2.7e-7 of E_in over the first 10 ms on both
- * meshes (2.2e-7 varying, 2.7e-7 rigid). The varying mesh closes to 7e-8 from either start on
- * this code, and arkode_erk, the default for the compliant meshes, is not thrown off by the old
- * start either. */
+/* The start-up audit: the first 10 ms at 1 ms steps on the varying and the rigid mesh with CVODE
+ * BDF, the outputs read after every step, with the friction table (the default) and with the
+ * friction solved at every evaluation. Measured on main 6934225 with this data: with the table
+ * the audit closes within 2.3e-7 (varying) and 1.5e-9 (rigid) of E_in, with the direct solve
+ * within 1.3e-6 and 4.2e-6 (the iterated friction solve's own scatter, which does not scale with
+ * rtol). A start without the friction torques gives the same orders on this code (1.1e-6 /
+ * 1.0e-6 direct, 1.8e-7 / 3.5e-9 with the table), so this guards the audit through the start,
+ * not the start itself: the torque balance of test_setup_and_step is what the old start fails. */
 static void test_start_audit(void)
 {
     static const int meshes[2] = {HG_MESH_MODEL_VARYING, HG_MESH_MODEL_RIGID};
-    int j, k;
+    int j, k, table;
     for (j = 0; j < 2; j++) {
-        hg_model *m = hg_model_new("resources", NULL, NULL);
-        hg_vars v;
-        hg_inputs du;
-        char err[HG_ERRLEN] = "";
-        double E0;
-        if (!m) return;
-        start_values(&v);
-        v.mesh_model = meshes[j];
-        v.friction_table = 0;
-        v.solver = HG_SOLVER_CVODE_BDF;
-        CHECK(hg_model_setup(m, &v, 0.0, err, sizeof err) == 0);
-        E0 = v.E_stored;
-        memset(&du, 0, sizeof du);
-        for (k = 1; k <= 10; k++) {
-            CHECK(hg_model_step(m, &v, &du, 1e-3, err, sizeof err) == 0);
-            hg_model_outputs(m, &v);
-            CHECK(v.E_in > 0.0);
-            CHECK_CLOSE(audit(&v), v.E_stored - E0, 0.0, 1e-6 * v.E_in);
+        for (table = 1; table >= 0; table--) {
+            hg_model *m = hg_model_new("resources", NULL, NULL);
+            hg_vars v;
+            hg_inputs du;
+            char err[HG_ERRLEN] = "";
+            double E0;
+            if (!m) return;
+            start_values(&v);
+            v.mesh_model = meshes[j];
+            v.friction_table = table;
+            v.solver = HG_SOLVER_CVODE_BDF;
+            CHECK(hg_model_setup(m, &v, 0.0, err, sizeof err) == 0);
+            E0 = v.E_stored;
+            memset(&du, 0, sizeof du);
+            for (k = 1; k <= 10; k++) {
+                CHECK(hg_model_step(m, &v, &du, 1e-3, err, sizeof err) == 0);
+                hg_model_outputs(m, &v);
+                CHECK(v.E_in > 0.0);
+                CHECK_CLOSE(audit(&v), v.E_stored - E0, 0.0, (table ? 1e-6 : 1e-5) * v.E_in);
+            }
+            hg_model_free(m);
         }
-        hg_model_free(m);
     }
 }
 

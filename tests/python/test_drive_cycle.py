@@ -251,9 +251,12 @@ def check_axle_loss(got, ref, total, mesh, others):
 def test_the_map_level_gives_the_fast_levels_axle_loss():
     """--level map (the mesh friction from the efficiency map) against the fast level (the
     friction model itself) over the first 100 s of WLTC class 3, launches included: the axle's
-    loss within 1.5 % (measured -0.4 % with the paper's friction; -1.08 % with the
-    limiting-shear defaults, whose mesh loss is ~1.8x larger, on maps made before the default
-    solver became arkode_erk), the mesh part within 5 %, the other parts within 1 %."""
+    loss within 1.5 %, the mesh part within 5 %, the other parts within 1 %. Measured: -0.4 % with
+    the paper's friction; with the limiting-shear defaults, whose mesh loss is ~1.8x larger,
+    -1.08 % on maps made before the default solver became arkode_erk and -1.05 % (mesh -2.6 %)
+    on the maps regenerated with the contact moving along its line of contact, so the bound
+    stays above 1 %: the map holds the varying mesh's steady efficiency, the fast level solves
+    the rigid mesh's friction as it goes."""
     check_axle_loss(first_100_s("map"), first_100_s("fast"), 0.015, 0.05, 0.01)
 
 
