@@ -236,13 +236,13 @@ static void begin_inputs(hg_model *m, const hg_vars *v, const hg_inputs *du, dou
     *h0 = keep && hg_stepping_jump_small(rt, &m->s, f_old, f_new) ? rt->h_int : 0.0;
 }
 
-static int begin_step(hg_model *m, const hg_vars *v, const hg_inputs *du, char *err,
-                      size_t errlen)
+static int begin_step(hg_model *m, const hg_vars *v, const hg_inputs *du, double h,
+                      char *err, size_t errlen)
 {
     hg_runtime *rt = &m->rt;
     double h0;
     begin_inputs(m, v, du, &h0);
-    if (hg_solver_set_max_step(m->solver, hg_stepping_step_limit(rt, &m->s), err, errlen))
+    if (hg_solver_set_max_step(m->solver, hg_stepping_step_limit(rt, &m->s, h), err, errlen))
         return -1;
     if (rt->restart && hg_solver_restart(m->solver, rt->t, rt->y, h0, err, errlen)) return -1;
     rt->restart = 0;
@@ -265,7 +265,7 @@ static int advance(hg_model *m, const hg_vars *v, const hg_inputs *du, double h,
     double t_end = rt->t + h;
     long steps0 = 0, steps1 = 0, evals = 0;
     int events = 0, dir[HG_STEPPING_N_ROOTS], pass;
-    if (begin_step(m, v, du, err, errlen)) return -1;
+    if (begin_step(m, v, du, h, err, errlen)) return -1;
     pass = hg_stepping_may_pass(rt);
     hg_solver_stats(m->solver, &steps0, &evals);
     while (rt->t < t_end) {

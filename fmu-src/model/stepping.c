@@ -9,6 +9,8 @@
 #define STEPS_PER_MODE 8      /* fixed steps per period of the highest natural mode, at least */
 #define ERK_STEPS_PER_MODE 3  /* the explicit method's steps per period of the highest natural
                                  mode, at least (hg_stepping_step_limit) */
+#define TILE_SLACK 1e-9       /* a communication step within this fraction of a whole number of
+                                 the explicit method's longest steps takes that number */
 #define HOLD_STEPS 4          /* steps with held inputs before the integrator may pass a step's
                                  end (hg_stepping_may_pass) */
 
@@ -141,16 +143,20 @@ void hg_stepping_begin(hg_runtime *rt, const hg_setup *s, const hg_inputs *u,
  * user's max_step). Beyond it the method's error estimate of that mode's residue, kept near the
  * tolerance by the integrator's own errors, drives the step size, and the steps then follow the
  * last digits of the inputs: two hosts' runs of one co-simulation differed at the tolerance
- * (docs/model.md, "The explicit method's step limit"). The fixed-step solver:
+ * (docs/model.md, "The explicit method's step limit"). That limit is cut down to the communication
+ * step h_comm in equal parts: the fewest steps it allows, where the longest ones and a sliver to
+ * the step's end cost a step more (and the controller's recovery from the sliver another). The
+ * fixed-step solver:
  * steps_per_mesh_cycle per mesh period, never longer than the user's max_step nor than
  * 1/STEPS_PER_MODE of the period of the highest natural mode, which a fixed step must resolve
  * whatever the speed. */
-double hg_stepping_step_limit(const hg_runtime *rt, const hg_setup *s)
+double hg_stepping_step_limit(const hg_runtime *rt, const hg_setup *s, double h_comm)
 {
     double f_mesh = fabs(rt->y[HG_Y_W_P]) * s->gear.N_p / HG_TWO_PI, h;
     if (s->explicit_rk) {
         h = 1.0 / (ERK_STEPS_PER_MODE * s->f_max);
-        return s->max_step > 0.0 ? fmin(h, s->max_step) : h;
+        if (s->max_step > 0.0) h = fmin(h, s->max_step);
+        return h_comm > 0.0 ? h_comm / ceil(h_comm / h * (1.0 - TILE_SLACK)) : h; /* equal parts */
     }
     if (!s->fixed_step && (s->max_step > 0.0 || s->p.mesh == HG_MESH_MODEL_RIGID))
         return s->max_step;

@@ -61,8 +61,8 @@ int hg_stepping_jump_small(const hg_runtime *rt, const hg_setup *s, const double
  * most likely continue on the same right-hand side. */
 int hg_stepping_may_pass(const hg_runtime *rt);
 
-/* The longest integrator step of this communication step [s] (0: no limit). */
-double hg_stepping_step_limit(const hg_runtime *rt, const hg_setup *s);
+/* The longest integrator step of this communication step of h_comm [s] (0: no limit). */
+double hg_stepping_step_limit(const hg_runtime *rt, const hg_setup *s, double h_comm);
 
 /* 1 when contact changes are root events (the exact dead zone of the varying mesh). */
 int hg_stepping_contact_events(const hg_dyn_params *p);
