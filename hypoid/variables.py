@@ -11,7 +11,7 @@ from typing import NamedTuple
 
 MODEL_NAME = 'HypoidGearPair'
 MODEL_VERSION = '0.1.0'
-GUID = '{d458e08c-3bd1-52ac-b349-a194f218c085}'
+GUID = '{2a060888-ec7e-56cb-81a3-166284126d7d}'
 
 
 class Variable(NamedTuple):
@@ -108,7 +108,7 @@ _TABLE = (
     Variable(name='pair[1].g_E', vr=71, causality='output', variability='continuous', type='Real', enumeration=None, unit='', display_unit=None, start=None, min=None, max=None, description='regime elasticity parameter W^(8/3)/U^2 of pair k (diagnostic, docs/physics.md §7)'),
     Variable(name='pair[2].g_E', vr=72, causality='output', variability='continuous', type='Real', enumeration=None, unit='', display_unit=None, start=None, min=None, max=None, description='regime elasticity parameter W^(8/3)/U^2 of pair k (diagnostic, docs/physics.md §7)'),
     Variable(name='pair[3].g_E', vr=73, causality='output', variability='continuous', type='Real', enumeration=None, unit='', display_unit=None, start=None, min=None, max=None, description='regime elasticity parameter W^(8/3)/U^2 of pair k (diagnostic, docs/physics.md §7)'),
-    Variable(name='P_loss_viscous', vr=74, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='viscous (film shear) part of P_loss; 0 for friction_model = coulomb and map'),
+    Variable(name='P_loss_viscous', vr=74, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description="viscous (film shear) part of P_loss: the viscous share of the pairs' friction solved directly, applied to P_loss; 0 for friction_model = coulomb and map"),
     Variable(name='P_loss_boundary', vr=75, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='boundary (asperity) part of P_loss: P_loss - P_loss_viscous'),
     Variable(name='P_churn', vr=76, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='churning loss of the ring gear in the sump (axle_losses = full; Changenet & Velex)'),
     Variable(name='P_bearings', vr=77, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description="friction loss of the four tapered roller bearings (axle_losses = full; Palmgren's M_0 + M_1)"),

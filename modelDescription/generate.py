@@ -43,6 +43,7 @@ class Spec:
         self.model = data["model"]
         self.enums = data.get("enumerations", {})
         self.units = data.get("units", {})
+        self.output_sets = list(data.get("output_sets", {"main": ""}))
         self.fields = []  # (c_type, c_field, array length or 0)
         self.vars = []
         for group in GROUPS:
@@ -57,6 +58,9 @@ class Spec:
         n = item.get("array", 0)
         field = c_identifier(item["name"].replace("[k]", ""))
         self.fields.append((C_TYPES[base], field, n))
+        if item.get("set", "main") not in self.output_sets or ("set" in item and group != "output"):
+            sys.exit(f"variables.toml: {item['name']}: set must name an [output_sets] entry "
+                     "and is for outputs only")
         start = item.get("start")
         if typ in self.enums and isinstance(start, str):
             start = [e[0] for e in self.enums[typ]].index(start) + 1
@@ -274,6 +278,9 @@ def write_c(spec, directory):
         consts = ", ".join(f"HG_{ename.upper()}_{iname.upper()} = {i}"
                            for i, (iname, _) in enumerate(items, 1))
         h.append(f"enum {{ {consts} }};")
+    sets = ", ".join(f"HG_OUTSET_{name.upper()} = {i}" for i, name in enumerate(spec.output_sets))
+    h += ["", "/* The sets the outputs are computed in, each when one of its outputs is read. */",
+          f"enum {{ {sets}, HG_NUM_OUTSETS = {len(spec.output_sets)} }};"]
     h += ["", "/* Every variable of the FMU; value reference r lives at hg_var_table[r].offset. */",
           "typedef struct {"]
     for ctype, field, n in spec.fields:
@@ -288,6 +295,7 @@ def write_c(spec, directory):
           "    int has_min, has_max;",
           "    double min, max;",
           "    int input;            /* index k among the inputs (hg_input_vr), -1 if no input */",
+          "    int outset;           /* outputs: the set it is computed with (HG_OUTSET_*), else 0 */",
           "    const char *unit;     /* \"\" when it has none */",
           "    const char *display_unit; /* NULL when it has none */",
           "    double display_factor, display_offset; /* display = factor * value + offset */",
@@ -315,7 +323,9 @@ def write_c(spec, directory):
                  f'offsetof(hg_vars, {v["field"]}), {start_num}, {start_str}, '
                  f'{int(lo is not None)}, {int(hi is not None)}, '
                  f'{fmt_num(float(lo or 0))}, {fmt_num(float(hi or 0))}, '
-                 f'{input_index.get(vr, -1)}, {c_units(spec, v)}}},')
+                 f'{input_index.get(vr, -1)}, '
+                 f'{spec.output_sets.index(v.get("set", spec.output_sets[0]))}, '
+                 f'{c_units(spec, v)}}},')
     c += ["};", ""] + c_inputs_source(inputs)
     write_if_changed(f"{directory}/hg_vars.h", "\n".join(h))
     write_if_changed(f"{directory}/hg_vars.c", "\n".join(c))

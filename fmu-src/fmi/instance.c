@@ -164,8 +164,8 @@ hg_model *hg_instance_model(hg_instance *c)
 
 fmi2Status hg_instance_output(hg_instance *c, const char *fn, const hg_var_info *info)
 {
-    if (c->set_up && c->model && !hg_model_outputs_current(c->model))
-        hg_model_outputs(c->model, &c->vars);
+    if (c->set_up && c->model && !hg_model_outputs_current(c->model, info->outset))
+        hg_model_outputs(c->model, &c->vars, info->outset);
     if (info->type != HG_REAL || isfinite(hg_real_value(c, info))) return fmi2OK;
     hg_error(c, fn, "output %s became %g at t = %.9g s", info->name, hg_real_value(c, info),
              hg_instance_time(c));

@@ -20,7 +20,7 @@ struct hg_model {
     hg_solver *solver;
     hg_friction_table *table; /* friction_table on with an EHL friction model, else NULL */
     hg_runtime rt;
-    int outputs_current; /* the outputs written last are those of rt */
+    int outputs_current[HG_NUM_OUTSETS]; /* each set of outputs written last is that of rt */
 };
 
 hg_model *hg_model_new(const char *resource_dir, hg_log_fn log, void *log_ctx)
@@ -86,21 +86,6 @@ static int make_solver(hg_model *m, char *err, size_t errlen)
     hg_solver_free(m->solver);
     m->solver = hg_solver_new(HG_NY, HG_STEPPING_N_ROOTS, rhs, roots, m, &opt, err, errlen);
     return m->solver ? 0 : -1;
-}
-
-static void write_outputs(hg_model *m, hg_vars *v)
-{
-    long steps = 0, evals = 0;
-    if (m->solver) hg_solver_stats(m->solver, &steps, &evals);
-    hg_outputs_write(&m->s, &m->rt, steps, evals, v);
-    m->outputs_current = 1;
-}
-
-int hg_model_outputs_current(const hg_model *m) { return m->outputs_current; }
-
-void hg_model_outputs(hg_model *m, hg_vars *v)
-{
-    if (!m->outputs_current) write_outputs(m, v);
 }
 
 /* ------------------------------------------------------------------ the friction table */
@@ -172,6 +157,52 @@ static hg_friction_table *table_in_use(const hg_model *m)
                                                                                      : NULL;
 }
 
+/* ------------------------------------------------------------------ outputs */
+
+/* The friction table the state ran on (NULL: the direct solve), so that a state's outputs are
+ * those of its right-hand side whatever ran since: after a restored state or a failed step the
+ * model's table may have been built for another key, and is then built again for the state's. */
+static const hg_friction_table *table_of_state(hg_model *m)
+{
+    const hg_runtime *rt = &m->rt;
+    if (!rt->ft_in_use || !m->table) return NULL;
+    if (!m->table->built || memcmp(&m->table->key, &rt->ft_key, sizeof rt->ft_key))
+        build_table(m);
+    return m->table;
+}
+
+static void write_outputs(hg_model *m, hg_vars *v, int set)
+{
+    long steps = 0, evals = 0;
+    if (set == HG_OUTSET_PAIRS) {
+        hg_model_outputs(m, v, HG_OUTSET_MAIN); /* the split of P_loss applies to it */
+        hg_outputs_pairs(&m->s, &m->rt, v);
+    } else {
+        if (m->solver) hg_solver_stats(m->solver, &steps, &evals);
+        m->s.p.table = table_of_state(m); /* the same unless restored or failed: a restart */
+        hg_outputs_main(&m->s, &m->rt, steps, evals, v);
+    }
+    m->outputs_current[set] = 1;
+}
+
+static void write_all_outputs(hg_model *m, hg_vars *v)
+{
+    int set;
+    for (set = 0; set < HG_NUM_OUTSETS; set++) write_outputs(m, v, set);
+}
+
+static void outputs_stale(hg_model *m)
+{
+    memset(m->outputs_current, 0, sizeof m->outputs_current);
+}
+
+int hg_model_outputs_current(const hg_model *m, int set) { return m->outputs_current[set]; }
+
+void hg_model_outputs(hg_model *m, hg_vars *v, int set)
+{
+    if (!m->outputs_current[set]) write_outputs(m, v, set);
+}
+
 /* ------------------------------------------------------------------ set-up */
 
 int hg_model_setup(hg_model *m, hg_vars *v, double t0, char *err, size_t errlen)
@@ -188,7 +219,7 @@ int hg_model_setup(hg_model *m, hg_vars *v, double t0, char *err, size_t errlen)
             "of %d mesh cycles completes",
             s->gear.name, s->p.ratio, s->p.k_m0, 1e3 * s->p.R_p0, v->f_2, v->f_3, v->f_4,
             s->p.c_t1, s->p.c_m, s->p.c_t2, v->n_avg_cycles);
-    write_outputs(m, v);
+    write_all_outputs(m, v);
     return 0;
 }
 
@@ -232,6 +263,7 @@ static void begin_inputs(hg_model *m, const hg_vars *v, const hg_inputs *du, dou
         rt->restart = 1;
         keep = 0;
     }
+    rt->ft_in_use = m->s.p.table != NULL;
     if (keep) rhs_now(m, &u, f_new);
     *h0 = keep && hg_stepping_jump_small(rt, &m->s, f_old, f_new) ? rt->h_int : 0.0;
 }
@@ -299,7 +331,7 @@ int hg_model_step(hg_model *m, hg_vars *v, const hg_inputs *du, double h, char *
 {
     hg_runtime start = m->rt;
     int bad = -1;
-    m->outputs_current = 0;
+    outputs_stale(m);
     if (!advance(m, v, du, h, err, errlen) && (bad = nonfinite_state(m->rt.y)) < 0) return 0;
     if (bad >= 0)
         hg_errorf(err, errlen, "state %d of the integrator became %g at t = %.9g s", bad,
@@ -325,6 +357,6 @@ int hg_model_restore(hg_model *m, hg_vars *v, const hg_runtime *in, char *err, s
     }
     m->rt = *in;
     m->rt.restart = 1;
-    write_outputs(m, v);
+    write_all_outputs(m, v);
     return 0;
 }

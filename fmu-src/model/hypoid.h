@@ -20,21 +20,24 @@ void hg_model_free(hg_model *m);
 
 /* Loads the data the parameters name, computes the damping and the calculated parameters, and
  * puts the state at static equilibrium at speed w_p0 at time t0. Writes the calculated
- * parameters and the outputs into v. */
+ * parameters and every output into v. */
 int hg_model_setup(hg_model *m, hg_vars *v, double t0, char *err, size_t errlen);
 
 /* Advances from the current time by h with the inputs of v (and their derivatives du, held
  * over the step), handling every contact change and averaging window inside. The outputs of v
  * are then out of date until hg_model_outputs writes them (computed when read). A failed step
- * (err filled, or a state that is not finite) leaves the model where the step began. */
+ * (err filled, or a state that is not finite) leaves the model where the step began, whose
+ * outputs it then writes again when asked (the same values). */
 int hg_model_step(hg_model *m, hg_vars *v, const hg_inputs *du, double h, char *err,
                   size_t errlen);
 
-/* Whether the outputs in v are those of the model's current state. */
-int hg_model_outputs_current(const hg_model *m);
+/* Whether the outputs of set `set` (HG_OUTSET_*, variables.toml's [output_sets]) in v are those
+ * of the model's current state. */
+int hg_model_outputs_current(const hg_model *m, int set);
 
-/* Writes the outputs of the current state into v (when they are out of date). */
-void hg_model_outputs(hg_model *m, hg_vars *v);
+/* Writes the outputs of set `set` of the current state into v (when they are out of date), each
+ * set on its own: what one set costs is not paid for reading another. */
+void hg_model_outputs(hg_model *m, hg_vars *v, int set);
 
 double hg_model_time(const hg_model *m);
 

@@ -57,7 +57,8 @@ static void write_motion(const hg_setup *s, const hg_runtime *rt, const hg_dyn_e
     v->rhs_evals = clamp_int(evals);
 }
 
-/* Power, losses and efficiency of the flanks and of the axle, and the oil's heat balance. */
+/* Power, losses and efficiency of the flanks and of the axle, and the oil's heat balance (the
+ * split of P_loss is hg_outputs_pairs'). */
 static void write_losses(const hg_runtime *rt, const hg_dyn_eval *ev, hg_vars *v)
 {
     v->P_loss = ev->P_loss;
@@ -65,8 +66,6 @@ static void write_losses(const hg_runtime *rt, const hg_dyn_eval *ev, hg_vars *v
     v->eta = ev->eta;
     v->eta_cycle = rt->eta_cycle;
     v->P_loss_cycle = rt->P_loss_cycle;
-    v->P_loss_viscous = ev->P_visc;
-    v->P_loss_boundary = ev->P_loss - ev->P_visc;
     v->P_churn = ev->axle.P_churn;
     v->P_bearings = ev->axle.P_bearings;
     v->P_seals = ev->axle.P_seals;
@@ -93,17 +92,32 @@ static void write_energy(const hg_setup *s, const double *y, const hg_dyn_eval *
     v->E_seals = y[HG_Y_E_SEAL];
 }
 
-void hg_outputs_write(const hg_setup *s, const hg_runtime *rt, long steps, long evals,
-                      hg_vars *v)
+/* The state's evaluation: what its right-hand side computes (all_pairs 0: the friction table when
+ * the state ran on one), or every pair's friction model solved directly (all_pairs 1). */
+static void evaluate(const hg_setup *s, const hg_runtime *rt, int all_pairs, hg_dyn_eval *ev)
 {
     hg_inputs u;
-    hg_dyn_eval ev;
     double warm[HG_MAX_PAIRS];
     memcpy(warm, rt->T_c_warm, sizeof warm); /* outputs must not perturb the integration */
     hg_stepping_inputs_at(rt, rt->t, &u);
-    hg_dyn_evaluate(&s->p, &u, rt->mode, rt->y, 1, warm, &ev);
+    hg_dyn_evaluate(&s->p, &u, rt->mode, rt->y, all_pairs, warm, ev);
+}
+
+void hg_outputs_main(const hg_setup *s, const hg_runtime *rt, long steps, long evals, hg_vars *v)
+{
+    hg_dyn_eval ev;
+    evaluate(s, rt, 0, &ev);
     write_motion(s, rt, &ev, steps, evals, v);
     write_losses(rt, &ev, v);
     write_energy(s, rt->y, &ev, v);
+}
+
+void hg_outputs_pairs(const hg_setup *s, const hg_runtime *rt, hg_vars *v)
+{
+    hg_dyn_eval ev;
+    evaluate(s, rt, 1, &ev);
     write_pairs(v, &ev);
+    /* the direct solves' viscous share of the flank loss, applied to P_loss */
+    v->P_loss_viscous = ev.P_loss > 0.0 ? v->P_loss * (ev.P_visc / ev.P_loss) : 0.0;
+    v->P_loss_boundary = v->P_loss - v->P_loss_viscous;
 }

@@ -1,4 +1,5 @@
-/* The model's outputs: every output variable of hg_vars from the current state. */
+/* The model's outputs: every output variable of hg_vars from the current state, in the sets of
+ * variables.toml's [output_sets] (HG_OUTSET_*). */
 #ifndef HG_OUTPUTS_H
 #define HG_OUTPUTS_H
 
@@ -6,9 +7,13 @@
 #include "model/setup.h"
 #include "model/stepping.h"
 
-/* Fills the outputs of v from rt (without disturbing its warm starts); steps and evals are the
- * integrator's counters. */
-void hg_outputs_write(const hg_setup *s, const hg_runtime *rt, long steps, long evals,
-                      hg_vars *v);
+/* Fills the main outputs of v from rt (without disturbing its warm starts) as its right-hand side
+ * computes them: with the friction table s->p.table when there is one, which must be the one the
+ * state ran on. steps and evals are the integrator's counters. */
+void hg_outputs_main(const hg_setup *s, const hg_runtime *rt, long steps, long evals, hg_vars *v);
+
+/* Fills the pair outputs of v from rt: every pair's friction model solved directly; the split of
+ * P_loss needs the main outputs of v to be current. */
+void hg_outputs_pairs(const hg_setup *s, const hg_runtime *rt, hg_vars *v);
 
 #endif

@@ -30,6 +30,8 @@ typedef struct {
     int map_warned;                /* the map level has said once that it left its grid */
     hg_ft_key ft_key;              /* the friction table's operating point, when ft_valid */
     int ft_valid;
+    int ft_in_use;                 /* the last step ran on the table of ft_key (else on the
+                                      direct solve): the outputs then use it too */
 } hg_runtime;
 
 /* Static equilibrium at speed w_p0 at time t0 (docs/physics.md §8.6), inputs of v held. */

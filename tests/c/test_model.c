@@ -6,6 +6,7 @@
  * the source directory (ctest's working directory) for resources/. */
 #include "model/hypoid.h"
 
+#include <limits.h>
 #include <math.h>
 #include <string.h>
 
@@ -15,6 +16,7 @@ typedef struct {
     int messages;
     char last[HG_ERRLEN];
     int setup_logged;
+    int tables_built;
 } log_record;
 
 static void record(void *ctx, const char *category, const char *message)
@@ -24,6 +26,7 @@ static void record(void *ctx, const char *category, const char *message)
     r->messages++;
     snprintf(r->last, sizeof r->last, "%s", message);
     if (strncmp(message, "set-up:", 7) == 0) r->setup_logged = 1;
+    if (strstr(message, "friction table built")) r->tables_built++;
 }
 
 /* Every variable at its start value; strings point at the table's (the model only reads them). */
@@ -58,6 +61,48 @@ static int same_real_outputs(const hg_vars *a, const hg_vars *b)
     return 1;
 }
 
+static void read_all(hg_model *m, hg_vars *v)
+{
+    int set;
+    for (set = 0; set < HG_NUM_OUTSETS; set++) hg_model_outputs(m, v, set);
+}
+
+/* Every output of v set to a value no evaluation gives (NaN, or INT_MIN for the integers). */
+static void poison_outputs(hg_vars *v)
+{
+    int r;
+    for (r = 0; r < HG_NUM_VARS; r++) {
+        const hg_var_info *info = &hg_var_table[r];
+        if (info->causality != HG_OUTPUT) continue;
+        if (info->type == HG_REAL)
+            *(double *)hg_var_ptr(v, info) = NAN;
+        else
+            *(int *)hg_var_ptr(v, info) = INT_MIN;
+    }
+}
+
+/* How many outputs of set `set` (or of the other sets, others = 1) still hold the poison. */
+static int poisoned(const hg_vars *v, int set, int others)
+{
+    int r, n = 0;
+    for (r = 0; r < HG_NUM_VARS; r++) {
+        const hg_var_info *info = &hg_var_table[r];
+        const void *p = hg_var_cptr(v, info);
+        if (info->causality != HG_OUTPUT || (info->outset == set) == others) continue;
+        n += info->type == HG_REAL ? isnan(*(const double *)p) : *(const int *)p == INT_MIN;
+    }
+    return n;
+}
+
+/* How many outputs set `set` lists (or the other sets, others = 1). */
+static int outputs_in(int set, int others)
+{
+    int r, n = 0;
+    for (r = 0; r < HG_NUM_VARS; r++)
+        n += hg_var_table[r].causality == HG_OUTPUT && (hg_var_table[r].outset == set) != others;
+    return n;
+}
+
 static double audit(const hg_vars *v)
 {
     return v->E_in - v->E_out - v->E_friction - v->E_damping + v->E_excitation;
@@ -65,7 +110,7 @@ static double audit(const hg_vars *v)
 
 static void test_setup_and_step(void)
 {
-    log_record log = {0, "", 0};
+    log_record log = {0, "", 0, 0};
     hg_model *m = hg_model_new("resources", record, &log);
     hg_vars v, after_a, after_b;
     hg_runtime snap;
@@ -101,21 +146,22 @@ static void test_setup_and_step(void)
     memset(&du, 0, sizeof du);
     for (k = 0; k < 10; k++) CHECK(hg_model_step(m, &v, &du, 1e-3, err, sizeof err) == 0);
     CHECK_CLOSE(hg_model_time(m), 1e-2, 1e-12, 0.0);
-    CHECK(!hg_model_outputs_current(m) && v.E_in == 0.0); /* outputs are written when asked */
-    hg_model_outputs(m, &v);
-    CHECK(hg_model_outputs_current(m));
+    CHECK(!hg_model_outputs_current(m, HG_OUTSET_MAIN) && v.E_in == 0.0); /* written when asked */
+    hg_model_outputs(m, &v, HG_OUTSET_MAIN);
+    CHECK(hg_model_outputs_current(m, HG_OUTSET_MAIN));
+    CHECK(!hg_model_outputs_current(m, HG_OUTSET_PAIRS));
     CHECK(v.E_in > 0.0 && v.E_friction > 0.0 && v.eta > 0.9 && v.eta < 1.0);
     /* energy audit: what went in and did not come out or get lost is stored */
     CHECK_CLOSE(audit(&v), v.E_stored - E0, 0.0, 1e-6 * v.E_in);
 
     hg_model_save(m, &snap);
     CHECK(hg_model_step(m, &v, &du, 5e-3, err, sizeof err) == 0);
-    hg_model_outputs(m, &v);
+    read_all(m, &v);
     after_a = v;
     CHECK(hg_model_restore(m, &v, &snap, err, sizeof err) == 0);
     CHECK(hg_model_time(m) == snap.t);
     CHECK(hg_model_step(m, &v, &du, 5e-3, err, sizeof err) == 0);
-    hg_model_outputs(m, &v);
+    read_all(m, &v);
     after_b = v;
     CHECK(same_real_outputs(&after_a, &after_b));
     hg_model_free(m);
@@ -184,7 +230,7 @@ static void test_input_ramp(void)
 
 static void test_errors(void)
 {
-    log_record log = {0, "", 0};
+    log_record log = {0, "", 0, 0};
     hg_model *m = hg_model_new("resources", record, &log);
     hg_vars v;
     hg_runtime snap;
@@ -205,9 +251,54 @@ static void test_errors(void)
     hg_model_free(NULL);
 }
 
+/* The output sets of variables.toml: each one written alone writes every output it lists and no
+ * other, the pairs' set with the main one (its split of P_loss builds on it); a failed step
+ * that built a friction table for other inputs leaves the outputs of its start, written again
+ * on the start's table. The full model (varying mesh, thermal EHL through the friction table). */
+static void test_output_sets(void)
+{
+    log_record log = {0, "", 0, 0};
+    hg_model *m = hg_model_new("resources", record, &log);
+    int tables;
+    hg_vars v, at_start;
+    hg_inputs du;
+    char err[HG_ERRLEN] = "";
+    int k;
+    if (!m) return;
+    start_values(&v);
+    CHECK(hg_model_setup(m, &v, 0.0, err, sizeof err) == 0);
+    memset(&du, 0, sizeof du);
+    for (k = 0; k < 5; k++) CHECK(hg_model_step(m, &v, &du, 1e-3, err, sizeof err) == 0);
+    poison_outputs(&v);
+    hg_model_outputs(m, &v, HG_OUTSET_MAIN);
+    CHECK(poisoned(&v, HG_OUTSET_MAIN, 0) == 0);
+    CHECK(poisoned(&v, HG_OUTSET_MAIN, 1) == outputs_in(HG_OUTSET_MAIN, 1));
+    CHECK(outputs_in(HG_OUTSET_PAIRS, 0) == 14 * HG_MAX_PAIRS + 2);
+    CHECK(hg_model_step(m, &v, &du, 1e-3, err, sizeof err) == 0);
+    poison_outputs(&v);
+    hg_model_outputs(m, &v, HG_OUTSET_PAIRS);
+    CHECK(poisoned(&v, HG_OUTSET_PAIRS, 0) == 0 && poisoned(&v, HG_OUTSET_PAIRS, 1) == 0);
+    CHECK(v.pair_mu[0] + v.pair_mu[1] + v.pair_mu[2] > 0.0 && v.P_loss_viscous > 0.0 &&
+          v.P_loss_boundary > 0.0);
+    CHECK_CLOSE(v.P_loss_viscous + v.P_loss_boundary, v.P_loss, 1e-15, 0.0);
+    /* a step that fails (a non-finite input) after a new table (a warmer bath) */
+    at_start = v;
+    tables = log.tables_built;
+    poison_outputs(&v);
+    v.T_s = NAN;
+    v.T_bath += 5.0;
+    CHECK(hg_model_step(m, &v, &du, 1e-3, err, sizeof err) != 0);
+    CHECK(log.tables_built == tables + 1);
+    read_all(m, &v);
+    CHECK(log.tables_built == tables + 2);
+    CHECK(same_real_outputs(&v, &at_start));
+    hg_model_free(m);
+}
+
 int main(void)
 {
     test_setup_and_step();
+    test_output_sets();
     test_start_audit();
     test_input_ramp();
     test_errors();
