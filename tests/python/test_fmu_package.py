@@ -4,6 +4,7 @@ variable table that must not drift from the modelDescription."""
 import pathlib
 import re
 import subprocess
+import sys
 import zipfile
 
 from fmpy.validation import validate_fmu
@@ -79,6 +80,20 @@ def test_readme_variable_table_is_current():
     """README's table is generated from variables.toml, the source of the XML and the C table."""
     subprocess.run(["python3", str(ROOT / "modelDescription" / "generate.py"), "--readme",
                     str(ROOT / "README.md"), "--check"], check=True)
+
+
+def test_readme_level_table_is_current(tmp_path):
+    """README's per-level cost and accuracy table is written by bench/level_table.py from its
+    recorded measurement (docs/level-table.json); a changed figure makes the check fail."""
+    script = [sys.executable, str(ROOT / "bench" / "level_table.py"), "--check"]
+    subprocess.run(script, check=True)
+    text = (ROOT / "README.md").read_text()
+    row = next(line for line in text.splitlines() if line.startswith("| full | `"))
+    cells = row.split(" | ")
+    cells[2] = cells[2] + "1"  # the full model's real-time factor, one digit more
+    stale = tmp_path / "README.md"
+    stale.write_text(text.replace(row, " | ".join(cells)))
+    assert subprocess.run(script + ["--file", str(stale)], capture_output=True).returncode == 1
 
 
 def test_python_variable_table_is_current():
