@@ -196,7 +196,7 @@ static void test_start_audit(void)
             memset(&du, 0, sizeof du);
             for (k = 1; k <= 10; k++) {
                 CHECK(hg_model_step(m, &v, &du, 1e-3, err, sizeof err) == 0);
-                hg_model_outputs(m, &v);
+                hg_model_outputs(m, &v, HG_OUTSET_MAIN);
                 CHECK(v.E_in > 0.0);
                 CHECK_CLOSE(audit(&v), v.E_stored - E0, 0.0, (table ? 1e-6 : 1e-5) * v.E_in);
             }
