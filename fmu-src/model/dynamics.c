@@ -66,10 +66,12 @@ static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn
     double w_p = y[HG_Y_W_P], theta = p->gear->N_p * y[HG_Y_PHI_P];
     if (p->mesh == HG_MESH_MODEL_VARYING) {
         ev->flank = active_flank(p, mode, y[HG_Y_X]);
-        if (p->phase) { /* a single-series set, tabulated */
+        if (p->phase) { /* tabulated */
+            hg_level_pick b;
+            hg_gearset_level_at(p->gear, ev->flank, y[HG_Y_T_KM], &b);
             hg_phase_table_locate(theta, &ev->cell);
             ev->located = 1;
-            hg_phase_table_mesh(p->phase, &ev->cell, &ev->mesh);
+            hg_phase_table_mesh(p->phase, &b, &ev->cell, &ev->mesh);
         } else {
             hg_gearset_mesh(p->gear, ev->flank, y[HG_Y_T_KM], theta, &ev->mesh);
         }
@@ -89,27 +91,43 @@ static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn
     flank_loads(p, mode, y[HG_Y_X], ev);
 }
 
+/* The friction tables of the two levels b picks (built now if they are not), whether both are
+ * usable. */
+static int friction_tables(const hg_dyn_params *p, const hg_level_pick *b,
+                           const hg_friction_table **lo, const hg_friction_table **hi)
+{
+    *lo = hg_ft_set_table(p->tables, &p->friction, p->gear, b->flank, b->lo);
+    *hi = b->hi == b->lo ? *lo : hg_ft_set_table(p->tables, &p->friction, p->gear, b->flank, b->hi);
+    return *lo && *hi;
+}
+
 /* The pairs' geometry at mesh angle theta and, with contact data, their friction forces
  * ev->pair[k].F_f: from the tables in the right-hand side (the friction table needs no radii nor
- * contact point velocities), else from the series and the friction model. */
+ * contact point velocities), else from the series and the friction model; the series and the
+ * tables of the flank in contact, blended between the torque levels around the filtered
+ * torque. */
 static void pair_forces(const hg_dyn_params *p, const double *y, int with_contact,
                         int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev,
                         hg_pair_geometry *geo)
 {
     double w_p = y[HG_Y_W_P], w_g = y[HG_Y_W_G], W = ev->W_drive + ev->W_coast;
     double theta = p->gear->N_p * y[HG_Y_PHI_P], F[HG_MAX_PAIRS];
-    int k, tabulated = p->table && !all_pairs;
+    const hg_friction_table *lo = NULL, *hi = NULL;
+    hg_level_pick b;
+    int k, tabulated;
+    hg_gearset_level_at(p->gear, ev->flank, y[HG_Y_T_KM], &b);
+    tabulated = p->tables && !all_pairs && with_contact && friction_tables(p, &b, &lo, &hi);
     if (p->phase && with_contact && !all_pairs) { /* the right-hand side: the tables */
         if (!ev->located) hg_phase_table_locate(theta, &ev->cell);
         ev->located = 1;
-        hg_phase_table_pairs(p->phase, &ev->cell, !tabulated, geo);
+        hg_phase_table_pairs(p->phase, &b, &ev->cell, !tabulated, geo);
     } else {
         hg_gearset_pairs(p->gear, ev->flank, y[HG_Y_T_KM], theta, with_contact, geo);
     }
     for (k = 0; k < HG_MAX_PAIRS; k++) ev->W_pair[k] = geo->ls[k] * W;
     if (!with_contact) return;
     if (tabulated) {
-        hg_friction_table_pairs(p->table, theta, ev->W_pair, w_p, w_g, ev->T_oil, F);
+        hg_friction_table_pairs_blend(lo, hi, b.w, theta, ev->W_pair, w_p, w_g, ev->T_oil, F);
         for (k = 0; k < HG_MAX_PAIRS; k++) ev->pair[k].F_f = F[k];
         return;
     }

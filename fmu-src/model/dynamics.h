@@ -52,10 +52,10 @@ typedef struct {
     double k_m0, R_p0;           /* mean mesh stiffness [N/m] and radius [m] */
     double ratio;                /* N_g / N_p */
     const hg_gearset *gear;      /* series already scaled by k_m_scale and e_0_scale */
-    const hg_phase_table *phase; /* gear's series tabulated, for the right-hand side */
+    const hg_phase_tables *phase; /* gear's series tabulated, for the right-hand side */
     hg_friction_config friction;
-    const hg_friction_table *table; /* tabulated F_f of the pairs for the right-hand side, or
-                                       NULL: hg_friction_pair at every evaluation */
+    hg_ft_set *tables;           /* tabulated F_f of the pairs for the right-hand side (built
+                                    on first use), or NULL: hg_friction_pair at every evaluation */
     const hg_effmap *map;        /* friction_model = map: efficiency of the rigid gear */
     int speed_governor;          /* load_mode = speed */
     double K_p, K_i;             /* governor gains [N m s/rad], [N m/rad] */

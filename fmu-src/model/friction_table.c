@@ -2,6 +2,7 @@
 #include "model/friction_table.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define TWO_PI 6.283185307179586
@@ -132,7 +133,8 @@ static void drift_slopes(double *e, const hg_ft_key *k, const hg_friction_config
 }
 
 void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg,
-                             const hg_gearset *g, const hg_ft_key *key, int gear_follows)
+                             const hg_gearset *g, int flank, int level, const hg_ft_key *key,
+                             int gear_follows)
 {
     int i, j;
     t->key = *key;
@@ -143,7 +145,7 @@ void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg
         for (i = 0; i < HG_FT_N_PSI; i++) { /* along the path: each solve warm-starts the next */
             hg_pair_point pt;
             double w0, *e = t->c[i + 1][j + 1];
-            hg_gearset_pair_point(g, TWO_PI * i / HG_FT_N_PSI, &pt);
+            hg_gearset_pair_point(g, flank, level, TWO_PI * i / HG_FT_N_PSI, &pt);
             e[HG_FT_CH_L] = ln_mu(cfg, &pt, W, key->w_p, key->w_g, key->T_bath, &warm);
             w0 = warm;
             drift_slopes(e, key, cfg, &pt, W, gear_follows, &warm);
@@ -246,4 +248,54 @@ void hg_friction_table_pairs(const hg_friction_table *t, double theta,
         F[k] = W[k] < HG_EHL_LOAD_MIN
                    ? 0.0
                    : W[k] * exp(ln_mu_at(t, &ps, k * (HG_FT_N_PSI / 3), W[k], d));
+}
+
+void hg_friction_table_pairs_blend(const hg_friction_table *lo, const hg_friction_table *hi,
+                                   double w, double theta, const double W[HG_MAX_PAIRS],
+                                   double w_p, double w_g, double T_bath, double F[HG_MAX_PAIRS])
+{
+    double F_hi[HG_MAX_PAIRS];
+    int k;
+    hg_friction_table_pairs(lo, theta, W, w_p, w_g, T_bath, F);
+    if (!(w > 0.0) || hi == lo) return;
+    hg_friction_table_pairs(hi, theta, W, w_p, w_g, T_bath, F_hi);
+    for (k = 0; k < HG_MAX_PAIRS; k++) F[k] += w * (F_hi[k] - F[k]);
+}
+
+void hg_ft_set_free(hg_ft_set *s)
+{
+    free(s->t);
+    s->t = NULL;
+    s->n_flanks = s->n_levels = 0;
+    s->keyed = 0;
+}
+
+int hg_ft_set_alloc(hg_ft_set *s, const hg_gearset *g, int gear_follows)
+{
+    int i, n = g->n_flanks * g->n_levels;
+    if (s->n_flanks * s->n_levels != n) {
+        hg_ft_set_free(s);
+        if (!(s->t = malloc((size_t)n * sizeof *s->t))) return -1;
+    }
+    s->n_flanks = g->n_flanks;
+    s->n_levels = g->n_levels;
+    s->keyed = 0;
+    s->gear_follows = gear_follows;
+    for (i = 0; i < n; i++) {
+        int fl = i / g->n_levels, lv = i % g->n_levels, first = 0;
+        while (!hg_gearset_same_contact(g, fl, first, lv)) first++;
+        s->shared[i] = fl * g->n_levels + first;
+        s->t[i].built = 0;
+    }
+    return 0;
+}
+
+const hg_friction_table *hg_ft_set_table(hg_ft_set *s, const hg_friction_config *cfg,
+                                         const hg_gearset *g, int flank, int level)
+{
+    int i = s->shared[flank * s->n_levels + level];
+    hg_friction_table *t = &s->t[i];
+    if (!t->built || memcmp(&t->key, &s->key, sizeof s->key))
+        hg_friction_table_build(t, cfg, g, flank, i % s->n_levels, &s->key, s->gear_follows);
+    return t->usable ? t : NULL;
 }

@@ -3,6 +3,7 @@
  *
  * The three pairs follow the same path of contact a third of the load-share period apart, so one
  * table serves all of them: F_f(psi, W) over the pair phase psi (period 2 pi, hg_gearset_pair_point)
+ * on one flank at one torque level of the gear set (hg_ft_set holds one per flank and level)
  * and the pair load W in [0, W_max], at reference pinion and gear speeds and bath temperature,
  * with its first derivatives in those three for the operating point's drift around them. The
  * entries come from hg_friction_pair itself, so the table wraps whichever friction model runs.
@@ -84,11 +85,13 @@ void hg_ft_key_next(hg_ft_key *key, int valid, double w_p, double ratio, double 
  * table is not used: the direct solve runs, and fails as it would without the table. */
 #define HG_FT_MU_MAX 10.0
 
-/* Fills the table from the friction model cfg on gear set g: four solves per node, or three when
+/* Fills the table from the friction model cfg on gear set g's series of flank `flank` and torque
+ * level `level` (as for hg_gearset_pair_point): four solves per node, or three when
  * gear_follows (a rigid mesh: w_g stays w_p w_g / w_p of the key, so one speed derivative along
  * that line serves, in the w_p channel, and the w_g channel is 0). */
 void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg,
-                             const hg_gearset *g, const hg_ft_key *key, int gear_follows);
+                             const hg_gearset *g, int flank, int level, const hg_ft_key *key,
+                             int gear_follows);
 
 /* F_f [N] of a pair at phase psi carrying W at speeds w_p, w_g and bath temperature T_bath; the
  * drifts from the key enter up to twice the rebuild window (speeds relative to at least
@@ -102,5 +105,37 @@ double hg_friction_table_F(const hg_friction_table *t, double psi, double W, dou
 void hg_friction_table_pairs(const hg_friction_table *t, double theta,
                              const double W[HG_MAX_PAIRS], double w_p, double w_g, double T_bath,
                              double F[HG_MAX_PAIRS]);
+
+/* Between two torque levels: (1 - w) F_lo + w F_hi from the tables lo and hi of the levels (w the
+ * upper level's weight of hg_gearset_level_at; lo alone when w = 0 or hi is lo). The direct solve
+ * blends the levels' geometry instead; the difference is tested in tests/c/test_friction_table.c. */
+void hg_friction_table_pairs_blend(const hg_friction_table *lo, const hg_friction_table *hi,
+                                   double w, double theta, const double W[HG_MAX_PAIRS],
+                                   double w_p, double w_g, double T_bath, double F[HG_MAX_PAIRS]);
+
+/* The tables of every flank and torque level of a gear set, t[flank * n_levels + level], for one
+ * key: a table is built when first asked for under the key (hg_ft_set_table), so a run builds
+ * only the levels its torque reaches, and levels whose contact series are the same
+ * (hg_gearset_same_contact: the friction at a pair load depends on the contact alone) share one.
+ * What a table holds depends on the key, flank and level alone, so when it was built changes
+ * nothing but the cost. */
+typedef struct {
+    hg_ft_key key;
+    int keyed; /* key is set */
+    int gear_follows; /* the tables are built for a rigid mesh (hg_friction_table_build) */
+    int n_flanks, n_levels;
+    int shared[HG_N_FLANKS * HG_MAX_LEVELS]; /* the table each flank and level uses */
+    hg_friction_table *t;
+} hg_ft_set;
+
+/* Allocates the (unbuilt) tables for g into s, which must be zeroed or allocated before, to be
+ * built with gear_follows; -1 when out of memory (s then holds none). */
+int hg_ft_set_alloc(hg_ft_set *s, const hg_gearset *g, int gear_follows);
+void hg_ft_set_free(hg_ft_set *s);
+
+/* The table of `flank` and `level` (as hg_gearset_level_at gives them) for s->key, built now
+ * with cfg on g if it is not; NULL when it is not usable (the direct solve runs). */
+const hg_friction_table *hg_ft_set_table(hg_ft_set *s, const hg_friction_config *cfg,
+                                         const hg_gearset *g, int flank, int level);
 
 #endif

@@ -216,8 +216,25 @@ void hg_gearset_scale(hg_gearset *g, double k_m_scale, double e_0_scale)
     hg_series_scale(&g->e_0, e_0_scale);
 }
 
-/* Level i and the weight w of level i + 1 at torque T (linear, held beyond the ends), and
- * dw/dT. */
+void hg_gearset_level_at(const hg_gearset *g, int flank, double T, hg_level_pick *b)
+{
+    int i = 0, n = g->n_levels;
+    b->flank = flank < g->n_flanks ? flank : HG_FLANK_DRIVE;
+    b->lo = b->hi = 0;
+    b->w = b->dw_dT = 0.0;
+    if (n == 1 || T <= g->T_level[0]) return;
+    if (T >= g->T_level[n - 1]) {
+        b->lo = b->hi = n - 1;
+        return;
+    }
+    while (T > g->T_level[i + 1]) i++;
+    b->lo = i;
+    b->hi = i + 1;
+    b->dw_dT = 1.0 / (g->T_level[i + 1] - g->T_level[i]);
+    b->w = (T - g->T_level[i]) * b->dw_dT;
+}
+
+/* The series of the two levels of hg_gearset_level_at and the weight of the upper one. */
 typedef struct {
     const hg_flank_series *lo, *hi;
     double w, dw_dT;
@@ -225,20 +242,12 @@ typedef struct {
 
 static void blend_at(const hg_gearset *g, int flank, double T, hg_level_blend *b)
 {
-    const hg_flank_series *s = g->s[flank < g->n_flanks ? flank : HG_FLANK_DRIVE];
-    int i = 0, n = g->n_levels;
-    b->lo = b->hi = &s[0];
-    b->w = b->dw_dT = 0.0;
-    if (n == 1 || T <= g->T_level[0]) return;
-    if (T >= g->T_level[n - 1]) {
-        b->lo = b->hi = &s[n - 1];
-        return;
-    }
-    while (T > g->T_level[i + 1]) i++;
-    b->lo = &s[i];
-    b->hi = &s[i + 1];
-    b->dw_dT = 1.0 / (g->T_level[i + 1] - g->T_level[i]);
-    b->w = (T - g->T_level[i]) * b->dw_dT;
+    hg_level_pick k;
+    hg_gearset_level_at(g, flank, T, &k);
+    b->lo = &g->s[k.flank][k.lo];
+    b->hi = &g->s[k.flank][k.hi];
+    b->w = k.w;
+    b->dw_dT = k.dw_dT;
 }
 
 static double blended(const hg_level_blend *b, int i, const hg_harmonics *h)
@@ -302,8 +311,6 @@ void hg_gearset_normalise_shares(double ls[HG_MAX_PAIRS])
 
 double hg_gearset_pair_phase(double theta, int k) { return (theta + TWO_PI * k) / 3.0; }
 
-int hg_gearset_single_series(const hg_gearset *g) { return g->n_levels == 1 && g->n_flanks == 1; }
-
 void hg_gearset_entrainment(const double up[2], const double ug[2], const double vc[2],
                             double w_p, double w_g, double u_p[2], double u_g[2])
 {
@@ -314,9 +321,28 @@ void hg_gearset_entrainment(const double up[2], const double ug[2], const double
     }
 }
 
-void hg_gearset_pair_point(const hg_gearset *g, double psi, hg_pair_point *out)
+static int same_series(const hg_series *a, const hg_series *b)
 {
-    const hg_series *y = g->s[HG_FLANK_DRIVE][0].y;
+    int i;
+    if (a->n != b->n || a->mean != b->mean) return 0;
+    for (i = 0; i < a->n; i++)
+        if (a->s[i] != b->s[i] || a->c[i] != b->c[i]) return 0;
+    return 1;
+}
+
+int hg_gearset_same_contact(const hg_gearset *g, int flank, int a, int b)
+{
+    const hg_flank_series *s = g->s[flank < g->n_flanks ? flank : HG_FLANK_DRIVE];
+    int i;
+    for (i = HG_S_R_X; i <= HG_S_VC_Y; i++)
+        if (!same_series(&s[a].y[i], &s[b].y[i])) return 0;
+    return 1;
+}
+
+void hg_gearset_pair_point(const hg_gearset *g, int flank, int level, double psi,
+                           hg_pair_point *out)
+{
+    const hg_series *y = g->s[flank < g->n_flanks ? flank : HG_FLANK_DRIVE][level].y;
     hg_harmonics h;
     hg_harmonics_eval(psi, HG_MAX_HARMONICS, &h);
     out->ls = hg_gearset_share_clamp(hg_series_value(&y[HG_S_LS], &h));

@@ -71,17 +71,31 @@ typedef struct {
 void hg_gearset_pairs(const hg_gearset *g, int flank, double T, double theta, int with_contact,
                       hg_pair_geometry *out);
 
-/* Whether the set has one torque level and one flank's series (the built-in sets): then the
- * series do not depend on flank and torque, and the model may tabulate them. */
-int hg_gearset_single_series(const hg_gearset *g);
+/* The levels whose series apply on `flank` at pinion torque T [N m]: the data's flank (the drive
+ * flank's for the coast flank of a file without one), levels lo and hi = lo + 1 blended linearly
+ * with the weight w of hi, and dw/dT [1/(N m)]; beyond the first and the last level lo = hi and
+ * w = 0 (so always for one level). hg_gearset_mesh and hg_gearset_pairs blend with it. */
+typedef struct {
+    int flank, lo, hi;
+    double w, dw_dT;
+} hg_level_pick;
 
-/* One pair of a single-series set at its own phase psi = (theta + 2 pi k) / 3 (period 2 pi): its
- * load share clamped (not renormalised), radii and velocities per unit speed. */
+void hg_gearset_level_at(const hg_gearset *g, int flank, double T, hg_level_pick *b);
+
+/* Whether torque levels a and b of `flank` (as for hg_gearset_level_at) hold the same contact
+ * series (R_x ... vc_y; the loaded surrogate's levels differ in k_m, R_p and ls alone), so that
+ * whatever depends on the contact alone is the same at both. */
+int hg_gearset_same_contact(const hg_gearset *g, int flank, int a, int b);
+
+/* One pair on `flank` (as for hg_gearset_level_at) at torque level `level` and at its own phase
+ * psi = (theta + 2 pi k) / 3 (period 2 pi): its load share clamped (not renormalised), radii and
+ * velocities per unit speed. */
 typedef struct {
     double ls, R_x, R_y, up[2], ug[2], vc[2];
 } hg_pair_point;
 
-void hg_gearset_pair_point(const hg_gearset *g, double psi, hg_pair_point *out);
+void hg_gearset_pair_point(const hg_gearset *g, int flank, int level, double psi,
+                           hg_pair_point *out);
 
 /* A load-share series value clamped to [0, 1] above the contact floor (docs/physics.md §10.7),
  * and the three pairs' shares renormalised to sum 1. */

@@ -8,8 +8,8 @@
 #include "model/stepping.h"
 
 /* Fills the main outputs of v from rt (without disturbing its warm starts) as its right-hand side
- * computes them: with the friction table s->p.table when there is one, which must be the one the
- * state ran on. steps and evals are the integrator's counters. */
+ * computes them: with the friction tables s->p.tables when there are, which must be keyed as the
+ * state ran. steps and evals are the integrator's counters. */
 void hg_outputs_main(const hg_setup *s, const hg_runtime *rt, long steps, long evals, hg_vars *v);
 
 /* Fills the pair outputs of v from rt: every pair's friction model solved directly; the split of

@@ -2,6 +2,7 @@
 #include "model/phase_table.h"
 
 #include <math.h>
+#include <stdlib.h>
 
 #define TWO_PI 6.283185307179586
 
@@ -18,9 +19,9 @@ static void node(const hg_series *y, const hg_harmonics *h, double w, double out
     out[1] = hg_series_slope(y, h) * w;
 }
 
-void hg_phase_table_build(hg_phase_table *t, const hg_gearset *g)
+static void build_one(hg_phase_table *t, const hg_gearset *g, const hg_flank_series *s)
 {
-    const hg_series *y = g->s[HG_FLANK_DRIVE][0].y;
+    const hg_series *y = s->y;
     const hg_series *mesh[HG_PT_N_MESH_CH] = {&y[HG_S_K_M], &y[HG_S_R_P], &g->e_0};
     const hg_series *pair[HG_PT_N_PAIR_CH] = {&y[HG_S_LS],   &y[HG_S_UP_X], &y[HG_S_UP_Y],
                                               &y[HG_S_UG_X], &y[HG_S_UG_Y], &y[HG_S_R_X],
@@ -36,6 +37,28 @@ void hg_phase_table_build(hg_phase_table *t, const hg_gearset *g)
         hg_harmonics_eval(W_PAIR * i, HG_MAX_HARMONICS, &h);
         for (c = 0; c < HG_PT_N_PAIR_CH; c++) node(pair[c], &h, W_PAIR, t->pair[i][c]);
     }
+}
+
+void hg_phase_tables_free(hg_phase_tables *ts)
+{
+    free(ts->t);
+    ts->t = NULL;
+    ts->n_flanks = ts->n_levels = 0;
+}
+
+int hg_phase_tables_build(hg_phase_tables *ts, const hg_gearset *g)
+{
+    int fl, lv, n = g->n_flanks * g->n_levels;
+    if (ts->n_flanks * ts->n_levels != n) {
+        hg_phase_tables_free(ts);
+        if (!(ts->t = malloc((size_t)n * sizeof *ts->t))) return -1;
+    }
+    ts->n_flanks = g->n_flanks;
+    ts->n_levels = g->n_levels;
+    for (fl = 0; fl < g->n_flanks; fl++)
+        for (lv = 0; lv < g->n_levels; lv++)
+            build_one(&ts->t[fl * g->n_levels + lv], g, &g->s[fl][lv]);
+    return 0;
 }
 
 /* Pair 0's phase theta / 3 in nodes of the pair grid is theta in nodes of the mesh grid. */
@@ -70,7 +93,13 @@ static double slope(const hg_pt_cell *c, const double *p0, const double *p1)
     return (c->da0 * p0[0] + c->db0 * p0[1] + c->da1 * p1[0] + c->db1 * p1[1]) * PER_W_MESH;
 }
 
-void hg_phase_table_mesh(const hg_phase_table *t, const hg_pt_cell *c, hg_mesh_point *out)
+/* The table of level `level` of the flank b picks. */
+static const hg_phase_table *table_of(const hg_phase_tables *ts, const hg_level_pick *b, int level)
+{
+    return &ts->t[b->flank * ts->n_levels + level];
+}
+
+static void mesh_one(const hg_phase_table *t, const hg_pt_cell *c, hg_mesh_point *out)
 {
     int i0 = c->i % HG_PT_N_MESH, i1 = (c->i + 1) % HG_PT_N_MESH;
 #define CH(k) t->mesh[i0][k], t->mesh[i1][k]
@@ -79,12 +108,29 @@ void hg_phase_table_mesh(const hg_phase_table *t, const hg_pt_cell *c, hg_mesh_p
     out->R_p = value(c, CH(HG_PT_R_P));
     out->e_0 = value(c, CH(HG_PT_E_0));
     out->de_0 = slope(c, CH(HG_PT_E_0));
-    out->dk_dT = 0.0; /* one torque level */
+    out->dk_dT = 0.0;
 #undef CH
 }
 
-void hg_phase_table_pairs(const hg_phase_table *t, const hg_pt_cell *c, int with_contact,
-                          hg_pair_geometry *out)
+/* a + w (b - a), the blend of hg_gearset_mesh and hg_gearset_pairs */
+static double blend(double a, double b, double w) { return a + w * (b - a); }
+
+void hg_phase_table_mesh(const hg_phase_tables *ts, const hg_level_pick *b, const hg_pt_cell *c,
+                         hg_mesh_point *out)
+{
+    hg_mesh_point hi;
+    mesh_one(table_of(ts, b, b->lo), c, out);
+    if (!(b->w > 0.0)) return; /* one level: no blend (and dk_m/dT = 0) */
+    mesh_one(table_of(ts, b, b->hi), c, &hi);
+    out->dk_dT = b->dw_dT * (hi.k_m - out->k_m);
+    out->k_m = blend(out->k_m, hi.k_m, b->w);
+    out->dk_m = blend(out->dk_m, hi.dk_m, b->w);
+    out->R_p = blend(out->R_p, hi.R_p, b->w); /* e_0: one series for every flank and level */
+}
+
+/* The pairs' values of one table, the load shares before clamping. */
+static void pairs_one(const hg_phase_table *t, const hg_pt_cell *c, int with_contact,
+                      hg_pair_geometry *out)
 {
     int k;
     for (k = 0; k < HG_MAX_PAIRS; k++) {
@@ -92,7 +138,7 @@ void hg_phase_table_pairs(const hg_phase_table *t, const hg_pt_cell *c, int with
 #define CH(j) t->pair[i0][j], t->pair[i1][j]
         /* each value straight into its place: through an array of the channels, the array's
          * unaligned re-reads stalled on its stores (a third of this function's time) */
-        out->ls[k] = hg_gearset_share_clamp(value(c, CH(HG_PT_LS)));
+        out->ls[k] = value(c, CH(HG_PT_LS));
         out->up[k][0] = value(c, CH(HG_PT_UP_X));
         out->up[k][1] = value(c, CH(HG_PT_UP_Y));
         out->ug[k][0] = value(c, CH(HG_PT_UG_X));
@@ -104,5 +150,35 @@ void hg_phase_table_pairs(const hg_phase_table *t, const hg_pt_cell *c, int with
         out->vc[k][1] = value(c, CH(HG_PT_VC_Y));
 #undef CH
     }
+}
+
+static void blend_pairs(hg_pair_geometry *out, const hg_pair_geometry *hi, double w,
+                        int with_contact)
+{
+    int k, i;
+    for (k = 0; k < HG_MAX_PAIRS; k++) {
+        out->ls[k] = blend(out->ls[k], hi->ls[k], w);
+        for (i = 0; i < 2; i++) {
+            out->up[k][i] = blend(out->up[k][i], hi->up[k][i], w);
+            out->ug[k][i] = blend(out->ug[k][i], hi->ug[k][i], w);
+        }
+        if (!with_contact) continue;
+        out->R_x[k] = blend(out->R_x[k], hi->R_x[k], w);
+        out->R_y[k] = blend(out->R_y[k], hi->R_y[k], w);
+        for (i = 0; i < 2; i++) out->vc[k][i] = blend(out->vc[k][i], hi->vc[k][i], w);
+    }
+}
+
+void hg_phase_table_pairs(const hg_phase_tables *ts, const hg_level_pick *b, const hg_pt_cell *c,
+                          int with_contact, hg_pair_geometry *out)
+{
+    int k;
+    pairs_one(table_of(ts, b, b->lo), c, with_contact, out);
+    if (b->w > 0.0) {
+        hg_pair_geometry hi;
+        pairs_one(table_of(ts, b, b->hi), c, with_contact, &hi);
+        blend_pairs(out, &hi, b->w, with_contact);
+    }
+    for (k = 0; k < HG_MAX_PAIRS; k++) out->ls[k] = hg_gearset_share_clamp(out->ls[k]);
     hg_gearset_normalise_shares(out->ls);
 }

@@ -1,6 +1,9 @@
-/* The gear set's Fourier series tabulated once per instance over their periods, so that the
- * right-hand side interpolates instead of summing up to 32 harmonics of seven series for three
- * pairs at every call. Cubic Hermite interpolation from the exact values and slopes at the
+/* The gear set's Fourier series tabulated once per instance over their periods, one table per
+ * flank and torque level of the file, so that the right-hand side interpolates instead of summing
+ * up to 32 harmonics of eleven series for three pairs (and two levels) at every call. Between two
+ * torque levels the tables' values are blended linearly with the weights of hg_gearset_level_at,
+ * as hg_gearset_mesh and hg_gearset_pairs blend the series: the blend commutes with the
+ * interpolation, so the tables' error is that of one level. Cubic Hermite interpolation from the exact values and slopes at the
  * nodes: C1, with errors of order (h n)^4 / 384 of the n-th harmonic's amplitude (below 1e-4 of
  * it for 32 harmonics on 512 nodes); the mesh point's derivatives dk_m, de_0 are those of the
  * interpolant, so the energy audit stays an identity. Checked against the series in
@@ -38,16 +41,25 @@ typedef struct {
     double a0, b0, a1, b1, da0, db0, da1, db1;
 } hg_pt_cell;
 
-/* Tabulates the series of a single-series set g (hg_gearset_single_series; after scaling). */
-void hg_phase_table_build(hg_phase_table *t, const hg_gearset *g);
+/* The tables of every flank and torque level of a gear set, t[flank * n_levels + level]. */
+typedef struct {
+    int n_flanks, n_levels;
+    hg_phase_table *t;
+} hg_phase_tables;
+
+/* Tabulates every series of g (after scaling) into ts, which must be zeroed or built before; -1
+ * when out of memory (ts then holds none). */
+int hg_phase_tables_build(hg_phase_tables *ts, const hg_gearset *g);
+void hg_phase_tables_free(hg_phase_tables *ts);
 
 void hg_phase_table_locate(double theta, hg_pt_cell *c);
 
-/* As hg_gearset_mesh and hg_gearset_pairs, from the table at the cell of theta; the pairs' radii
- * and contact point velocities only when with_contact is non-zero (the load shares and flank
- * velocities always). */
-void hg_phase_table_mesh(const hg_phase_table *t, const hg_pt_cell *c, hg_mesh_point *out);
-void hg_phase_table_pairs(const hg_phase_table *t, const hg_pt_cell *c, int with_contact,
-                          hg_pair_geometry *out);
+/* As hg_gearset_mesh and hg_gearset_pairs with the levels b picks, from the tables at the cell
+ * of theta; the pairs' radii and contact point velocities only when with_contact is non-zero
+ * (the load shares and flank velocities always). */
+void hg_phase_table_mesh(const hg_phase_tables *ts, const hg_level_pick *b, const hg_pt_cell *c,
+                         hg_mesh_point *out);
+void hg_phase_table_pairs(const hg_phase_tables *ts, const hg_level_pick *b, const hg_pt_cell *c,
+                          int with_contact, hg_pair_geometry *out);
 
 #endif

@@ -86,7 +86,10 @@ static int load_gearset(hg_setup *s, const char *resource_dir, const hg_vars *v,
     if (hg_gearset_load(f.path, &s->gear, why, sizeof why))
         return load_failed(&f, why, err, errlen);
     hg_gearset_scale(&s->gear, v->k_m_scale, v->e_0_scale);
-    if (hg_gearset_single_series(&s->gear)) hg_phase_table_build(&s->phase, &s->gear);
+    if (hg_phase_tables_build(&s->phase, &s->gear)) {
+        hg_errorf(err, errlen, "out of memory for the tables of %s", s->gear.name);
+        return -1;
+    }
     return 0;
 }
 
@@ -255,7 +258,7 @@ static void dynamics_params(hg_setup *s, const hg_vars *v)
                      &p->k_m0, &p->R_p0);
     p->ratio = (double)s->gear.N_g / s->gear.N_p;
     p->gear = &s->gear;
-    p->phase = hg_gearset_single_series(&s->gear) ? &s->phase : NULL;
+    p->phase = &s->phase;
     s->heat.valid = 0; /* emptied: the ledger is set up anew below */
     p->heat = &s->heat;
     p->friction.model = v->friction_model;
@@ -328,4 +331,8 @@ int hg_setup_load(hg_setup *s, const char *resource_dir, const hg_logger *lg, hg
     return 0;
 }
 
-void hg_setup_free(hg_setup *s) { hg_effmap_free(&s->map); }
+void hg_setup_free(hg_setup *s)
+{
+    hg_effmap_free(&s->map);
+    hg_phase_tables_free(&s->phase);
+}

@@ -14,7 +14,7 @@
 
 typedef struct {
     hg_gearset gear;
-    hg_phase_table phase; /* gear's series tabulated */
+    hg_phase_tables phase; /* gear's series tabulated, per flank and torque level */
     hg_lubricant lub;
     hg_effmap map;        /* friction_model = map only */
     hg_heat_memo heat;    /* the housing heat's cache */

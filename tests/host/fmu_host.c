@@ -113,6 +113,7 @@ int host_load(fmu_lib *f, const char *so_path)
         SYM(reset, "fmi2Reset") && SYM(get_real, "fmi2GetReal") &&
         SYM(get_integer, "fmi2GetInteger") && SYM(set_real, "fmi2SetReal") &&
         SYM(set_integer, "fmi2SetInteger") && SYM(set_boolean, "fmi2SetBoolean") &&
+        SYM(set_string, "fmi2SetString") &&
         SYM(set_real_input_derivatives, "fmi2SetRealInputDerivatives") &&
         SYM(do_step, "fmi2DoStep") && SYM(get_state, "fmi2GetFMUstate") &&
         SYM(set_state, "fmi2SetFMUstate") && SYM(free_state, "fmi2FreeFMUstate") &&
@@ -318,6 +319,10 @@ int host_set(instance *in, const char *name, const char *text)
         fmi2Boolean b = strcmp(text, "true") == 0 || (!*rest && x != 0.0);
         fmi2ValueReference r = (fmi2ValueReference)host_value_reference(in->m, name);
         return in->f->set_boolean(in->c, &r, 1, &b) == fmi2OK ? 0 : host_fail(name);
+    }
+    if (strncmp(elem, "<String", 7) == 0) { /* a data file's name */
+        fmi2ValueReference r = (fmi2ValueReference)host_value_reference(in->m, name);
+        return in->f->set_string(in->c, &r, 1, &text) == fmi2OK ? 0 : host_fail(name);
     }
     if (!*rest && x == (int)x) return host_set_int(in, name, (int)x);
     return enum_item(in->m, elem, text, &i) ? host_fail(text) : host_set_int(in, name, i);

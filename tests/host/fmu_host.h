@@ -30,6 +30,7 @@ typedef struct {
     fmi2SetRealTYPE *set_real;
     fmi2SetIntegerTYPE *set_integer;
     fmi2SetBooleanTYPE *set_boolean;
+    fmi2SetStringTYPE *set_string;
     fmi2SetRealInputDerivativesTYPE *set_real_input_derivatives;
     fmi2DoStepTYPE *do_step;
     fmi2GetFMUstateTYPE *get_state;
