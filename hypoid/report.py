@@ -214,9 +214,9 @@ def _lossmap_comparison(lm):
           "and Hurley (SAE) measured rear-axle mechanical and spin losses varying strongly with "
           "oil temperature and bearing preload.",
           f"- Reading: {_reading(loaded, hi_pub)} JTEKT (FISITA 2006, F2006P299) attribute "
-          "about half of a rear axle's loss to the pinion bearings; the pinion preload here is "
-          "calibrated to workshop rotating-torque specifications, f_0 and the churning "
-          "coefficients are not verified (docs/axle.md, 'How the figures compare' and "
+          "about half of a rear axle's loss to the pinion bearings; the pinion and carrier "
+          "preloads here are calibrated to workshop turning-torque specifications, f_0 and the "
+          "churning coefficients are not verified (docs/axle.md, 'How the figures compare' and "
           "'Constants against published sources')."]
     return L
 
