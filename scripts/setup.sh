@@ -30,9 +30,14 @@ fi
 # FMU binaries, SUNDIALS for the win64 one; then the win64 DLL (skipped with a message where the
 # cross toolchain cannot be installed; docs/portability.md).
 musl="" sundials="" sundials_dir=""
+third_party=$(scripts/third_party.sh) || echo "setup: WARNING - fetching the third-party sources" \
+  "failed (see above); building without them" >&2
 while IFS='=' read -r key value; do
   case $key in musl) musl=$value ;; sundials) sundials=$value ;; esac
-done < <(scripts/third_party.sh)
+done <<<"$third_party"
+[ -n "$sundials" ] && [ -n "$musl" ] || echo "setup: WARNING - without Debian's musl and sundials" \
+  "sources the FMU uses the system libm and Debian's SUNDIALS archives (built without" \
+  "optimisation: about 2x slower) and carries no win64 binary; run scripts/setup.sh again" >&2
 # SUNDIALS for linux64 built with optimisation from the same source (else Debian's archives)
 [ -z "$sundials" ] ||
   sundials_dir=$(scripts/sundials.sh "$sundials" "$PWD/build/third_party/sundials-linux64" | tail -1)

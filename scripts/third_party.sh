@@ -29,6 +29,10 @@ if [ ${#missing[@]} -gt 0 ]; then
   else
     sudo_cmd=""
     [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
+    # one fetch at a time on this machine: the deb-src entry is shared, and a second checkout's
+    # cleanup would remove it under the first one's download
+    exec 9>"${TMPDIR:-/tmp}/hypoid-third-party.lock"
+    flock 9
     entry=/etc/apt/sources.list.d/zz-hypoid-deb-src.sources
     apt_quiet() { $sudo_cmd apt-get -o DPkg::Lock::Timeout=300 -qq "$@" >/dev/null; }
     cleanup() { $sudo_cmd rm -f "$entry"; apt_quiet update || true; }
