@@ -81,7 +81,8 @@ static void poison_outputs(hg_vars *v)
     }
 }
 
-/* How many outputs of set `set` (or of the other sets, others = 1) still hold the poison. */
+/* How many outputs of set `set` (or of the other sets, others = 1) still hold the poison (isnan
+ * is only nonzero, not 1, on some C libraries: mingw-w64 gives -1). */
 static int poisoned(const hg_vars *v, int set, int others)
 {
     int r, n = 0;
@@ -89,7 +90,7 @@ static int poisoned(const hg_vars *v, int set, int others)
         const hg_var_info *info = &hg_var_table[r];
         const void *p = hg_var_cptr(v, info);
         if (info->causality != HG_OUTPUT || (info->outset == set) == others) continue;
-        n += info->type == HG_REAL ? isnan(*(const double *)p) : *(const int *)p == INT_MIN;
+        n += info->type == HG_REAL ? isnan(*(const double *)p) != 0 : *(const int *)p == INT_MIN;
     }
     return n;
 }
