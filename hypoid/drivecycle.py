@@ -35,7 +35,7 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 
 from hypoid import cliargs
-from hypoid.effmap import TEMPERATURES_C
+from hypoid.effmap import TEMPERATURES_C, builtin_map_fits
 from hypoid.instance import TABLE, Instance
 from hypoid.paths import user_path
 
@@ -63,9 +63,9 @@ MAP_T_MIN = min(TEMPERATURES_C) + ZERO_C
 def default_level(T_amb, starts, extra):
     """The drive cycle's level when none is asked for (docs/work-precision.md): map while the oil
     starts and the air stays in the map's range and a built-in map exists (none for a gear-set
-    or lubricant file of one's own), else fast."""
-    own = {"gear_set_file", "lubricant_file"} & set(extra)
-    return "map" if min(T_amb, *starts) >= MAP_T_MIN and not own else "fast"
+    or lubricant file of one's own, nor for the tooth data the maps were not made with), else
+    fast."""
+    return "map" if min(T_amb, *starts) >= MAP_T_MIN and builtin_map_fits(extra) else "fast"
 
 
 GEAR_OUT = ["w_w", "w_p", "T_oil", "P_loss", "P_loss_viscous", "P_churn", "P_bearings",

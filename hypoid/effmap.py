@@ -87,11 +87,32 @@ def content_hash(path):
     return f"{h:016x}"
 
 
+def paper_tooth_data(params):
+    """True when the point runs the paper's calibrated one-series tooth data (tooth_data = paper
+    or preset = paper), as the FMU decides it (fmu-src/model/setup.c)."""
+    def chosen(name):
+        return TABLE.canonical(name, params.get(name, TABLE.start(name))) == "paper"
+    return chosen("preset") or chosen("tooth_data")
+
+
+def builtin_gear_set(params):
+    """The resources' gear-set file of the built-in gear_set for these parameters."""
+    folder = "gearsets/" if paper_tooth_data(params) else "gearsets/loaded/"
+    return f"{folder}gearset{params.get('gear_set', 1)}.txt"
+
+
+def builtin_map_fits(params):
+    """Whether the built-in maps (made at the defaults) are made for these parameters' data
+    files: no gear-set or lubricant file of one's own, and the default tooth data."""
+    own = {"gear_set_file", "lubricant_file"} & {k for k, v in params.items() if v}
+    return not own and paper_tooth_data(params) == paper_tooth_data({})
+
+
 def source_files(fmu, params):
     """{'gear_set': path, 'lubricant': path}: the data files the FMU reads for these
     parameters (its built-in resources, a user's file, or a name inside its resources)."""
     resources = unzipped(fmu) / "resources"
-    gear = params.get("gear_set_file") or f"gearsets/gearset{params.get('gear_set', 1)}.txt"
+    gear = params.get("gear_set_file") or builtin_gear_set(params)
     lub = params.get("lubricant_file") or \
         f"lubricants/{LUBRICANTS[params.get('lubricant', 1)]}.txt"
     out = {}

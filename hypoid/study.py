@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from hypoid import cliargs, lossmap, parallel, steady, sweep
 from hypoid.instance import SPEED_KEY
 from hypoid.paths import user_path
-from hypoid.tables import PAPER_EHL
+from hypoid.tables import PAPER_CHOICES
 
 SWAPPED_NAME = "OS265963 with alpha* of OS265962"
 SWAPPED_FILE = "OS265963-alpha-OS265962.txt"
@@ -117,10 +117,10 @@ def points_of(spec, swapped_file):
 
 
 def paper_ehl(points):
-    """The points with the paper's EHL choices wherever a point does not set its own: the study
-    reproduces the paper, where the FMU's defaults follow the traction evidence
-    (docs/friction-evidence.md)."""
-    return [{**PAPER_EHL, **p} for p in points]
+    """The points with the paper's EHL choices and calibrated tooth data wherever a point does
+    not set its own: the study reproduces the paper, where the FMU's defaults follow the traction
+    evidence (docs/friction-evidence.md) and the loaded tooth-contact analysis."""
+    return [{**PAPER_CHOICES, **p} for p in points]
 
 
 def unique(points):

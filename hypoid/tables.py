@@ -11,11 +11,14 @@ BUILTIN_LUBRICANTS = {1: "OS265962", 2: "OS265963"}
 # the reference conditions of the paper's figures (other columns at the FMU's start values)
 # (every parameter a study varies besides gear set, lubricant, torque and speed belongs here)
 # the paper's EHL choices spelled out (the FMU's defaults follow the traction evidence instead,
-# docs/friction-evidence.md; friction_preset = paper would override a study's variant of one)
+# docs/friction-evidence.md)
 PAPER_EHL = {"roelands_z": "simple", "shear_pressure": "mean", "Lambda_cap": 0.0,
              "relaxation": "constant"}
+# with the paper's calibrated one-series tooth data (the FMU's default is the loaded data;
+# preset = paper selects both, but would override a study's variant of one)
+PAPER_CHOICES = {**PAPER_EHL, "tooth_data": "paper"}
 REFERENCE = {"T_bath": 313.15, "friction_model": "ehl_thermal", "mesh_model": "varying",
-             "k_f": 0.0, **PAPER_EHL, "e_0_scale": 1.0, "k_m_scale": 1.0}
+             "k_f": 0.0, **PAPER_CHOICES, "e_0_scale": 1.0, "k_m_scale": 1.0}
 
 
 def prepare(df):

@@ -3,6 +3,11 @@
 coefficient of the FZG gear-test correlation (docs/friction-evidence.md):
 
     .venv/bin/python tools/friction_figures.py [--fmu build/HypoidGearPair.fmu]
+        [--before friction_preset=paper]
+
+--before names the settings of the "before" column (default: the paper's friction on the
+default tooth data; tooth_data=paper gives the change of the default tooth data,
+docs/physics.md §10.8, preset=paper the whole paper against the defaults).
 
 Each point: the regression scenario protocol (hypoid/regress.py: 60 mesh cycles to settle, 20
 recorded, 40 degC bath, gear set 1); mu is the load-weighted mean over the pairs, P_loss the mean
@@ -45,16 +50,20 @@ def mu_mz(T_s, rpm, X_L=1.0):
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--fmu", default="build/HypoidGearPair.fmu")
+    ap.add_argument("--before", nargs="+", default=["friction_preset=paper"],
+                    metavar="NAME=VALUE", help="the settings of the 'before' column")
     args = ap.parse_args(argv)
+    before = dict(item.split("=", 1) for item in args.before)
+    label = "paper" if before == {"friction_preset": "paper"} else " ".join(args.before)
     inst = Instance(args.fmu)
-    print("| oil | rpm | N·m | μ paper | μ default | μ_mZ ISO/TR 14179-2 | P_loss paper [W] "
-          "| P_loss default [W] | ΔP_loss / P_loss | η paper | η default |")
+    print(f"| oil | rpm | N·m | μ {label} | μ default | μ_mZ ISO/TR 14179-2 | P_loss {label} [W] "
+          f"| P_loss default [W] | ΔP_loss / P_loss | η {label} | η default |")
     print("|---|---|---|---|---|---|---|---|---|---|---|")
     for lub, oil in OILS.items():
         for rpm in SPEEDS:
             for T in TORQUES:
                 point = {"lubricant": lub, "T_s": T, SPEED_KEY: rpm}
-                a = run_scenario(inst, {**point, "friction_preset": "paper"})
+                a = run_scenario(inst, {**point, **before})
                 b = run_scenario(inst, point)
                 dP = b["P_loss_mean_W"] / a["P_loss_mean_W"] - 1.0
                 print(f"| {oil} | {rpm:.0f} | {T:.0f} | {a['mu_mean']:.4f} | {b['mu_mean']:.4f} "

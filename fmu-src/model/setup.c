@@ -22,11 +22,27 @@ typedef struct {
     char path[4096];                  /* the file to read, after resolve() */
 } data_file;
 
+/* preset = paper: the paper's friction and tooth data together (docs/friction-evidence.md) */
+static int paper_friction(const hg_vars *v)
+{
+    return v->preset == HG_PRESET_PAPER || v->friction_preset == HG_FRICTION_PRESET_PAPER;
+}
+
+static int paper_tooth_data(const hg_vars *v)
+{
+    return v->preset == HG_PRESET_PAPER || v->tooth_data == HG_TOOTH_DATA_PAPER;
+}
+
+/* The built-in gear set's tooth data: the paper's calibrated one series, or the loaded
+ * two-flank file (docs/data-files.md). */
 static data_file gearset_file(const hg_vars *v)
 {
-    data_file f = {"gear_set_file", "", "gear_set", "", ""};
+    int paper = paper_tooth_data(v);
+    data_file f = {"gear_set_file", "", "", "", ""};
     f.user_file = v->gear_set_file;
-    snprintf(f.builtin, sizeof f.builtin, "gearsets/gearset%d.txt", v->gear_set);
+    f.builtin_key = paper ? "gear_set (tooth_data = paper)" : "gear_set (tooth_data = loaded)";
+    snprintf(f.builtin, sizeof f.builtin, "gearsets/%sgearset%d.txt", paper ? "" : "loaded/",
+             v->gear_set);
     return f;
 }
 
@@ -62,7 +78,7 @@ static int resolve(data_file *f, const char *resource_dir, char *err, size_t err
     return 0;
 }
 
-/* "gear_set_file = 'x.txt'" or "gear_set = 'gearsets/gearset1.txt'". */
+/* "gear_set_file = 'x.txt'" or "gear_set (tooth_data = paper) = 'gearsets/gearset1.txt'". */
 static void describe(const data_file *f, char *buf, size_t len)
 {
     snprintf(buf, len, "%s = '%s'", *f->user_file ? f->user_key : f->builtin_key,
@@ -190,7 +206,7 @@ static void ehl_params(hg_setup *s, const hg_vars *v)
                         : v->shear_pressure == HG_SHEAR_PRESSURE_HERTZ ? HG_SHEAR_P_HERTZ
                                                                        : HG_SHEAR_P_MEAN;
     e->relaxation = v->relaxation == HG_RELAXATION_TTPS ? HG_RELAX_TTS : HG_RELAX_CONSTANT;
-    if (v->friction_preset == HG_FRICTION_PRESET_PAPER) { /* the paper's choices together */
+    if (paper_friction(v)) { /* the paper's choices together */
         e->roelands_Z = HG_Z_SIMPLE;
         e->shear_pressure = HG_SHEAR_P_MEAN;
         e->relaxation = HG_RELAX_CONSTANT;

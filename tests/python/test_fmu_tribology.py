@@ -18,9 +18,9 @@ OUT = ["T_fp", "T_fg", "w_p", "w_g", "P_loss", "eta_cycle", "E_in", "E_friction"
       [f"pair[{k}].{q}" for k in (1, 2, 3) for q in PAIR]
 
 
-def run(fmu, **start):
+def run(fmu, stop_time=0.3, **start):
     """The default point (2000 rpm, 100 N.m) with the paper's EHL choices unless start says."""
-    return simulate(fmu, stop_time=0.3, output_interval=2e-4,
+    return simulate(fmu, stop_time=stop_time, output_interval=2e-4,
                     start_values={"friction_preset": PAPER, **start}, output=OUT)
 
 
@@ -117,6 +117,20 @@ def test_paper_preset_is_the_four_paper_choices(fmu_path, default):
                   relaxation=ENUMERATIONS["relaxation"]["constant"])
     for name in OUT:
         assert np.array_equal(spelled[name], default[name]), name
+
+
+def test_preset_paper_is_the_paper_friction_and_tooth_data(fmu_path):
+    """preset = paper is friction_preset = paper with tooth_data = paper, and overrides what the
+    friction parameters and tooth_data say (the paper, reproduced by one setting)."""
+    items = ENUMERATIONS
+    spelled = run(fmu_path, tooth_data=items["tooth_data"]["paper"], stop_time=0.05)
+    preset = run(fmu_path, friction_preset=items["friction_preset"]["parameters"],
+                 preset=items["preset"]["paper"], tooth_data=items["tooth_data"]["loaded"],
+                 roelands_z=items["roelands_z"]["exact"], Lambda_cap=0.075, stop_time=0.05)
+    for name in OUT:
+        assert np.array_equal(spelled[name], preset[name]), name
+    loaded = run(fmu_path, tooth_data=items["tooth_data"]["loaded"], stop_time=0.05)
+    assert not np.array_equal(loaded["P_loss"], preset["P_loss"])
 
 
 def test_default_friction_lies_in_the_gear_test_band(fmu_path, default):

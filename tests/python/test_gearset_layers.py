@@ -220,3 +220,57 @@ def test_shipped_loaded_file_runs_from_the_resources_folder(fmu_path):
                 "T_s": 100.0, "speed_rpm": 2000.0})
     gear.step(0.02)
     assert gear.get("contact") == 1 and 2.0e8 < gear.get("k_m") < 3.2e8
+
+
+BUILTIN = pathlib.Path(__file__).parents[2] / "resources" / "gearsets"
+
+
+@pytest.mark.parametrize("n", [1, 2, 3])
+def test_tooth_data_picks_the_built_in_file(fmu_path, n):
+    """tooth_data = loaded runs built-in gear set n on its shipped loaded file, tooth_data =
+    paper on the one-series file, and preset = paper on the one-series file whatever tooth_data
+    says: the FMU's mean stiffness k_m0 at the start torque (100 N·m, a level of the loaded
+    files; 150 N·m, halfway between two) and its tooth counts are those the Python reader finds
+    in the file."""
+    loaded = read_gearset(SHIPPED / f"gearset{n}.txt")
+    paper = read_gearset(BUILTIN / f"gearset{n}.txt")
+    i = loaded.torque_levels.index(100.0)
+    k_100 = loaded.layers[("drive", i + 1)]["k_m"].mean
+    k_150 = np.interp(150.0, loaded.torque_levels,
+                      [loaded.layers[("drive", j + 1)]["k_m"].mean
+                       for j in range(len(loaded.torque_levels))])
+    gear = Instance(fmu_path)
+    try:
+        for params, k_m0 in (({"tooth_data": "loaded"}, k_100),
+                             ({"tooth_data": "loaded", "T_s": 150.0}, k_150),
+                             ({"tooth_data": "paper"}, paper.series["k_m"].mean),
+                             ({"tooth_data": "loaded", "preset": "paper"},
+                              paper.series["k_m"].mean)):
+            gear.start({"gear_set": n, "T_s": 100.0, **params})
+            assert gear.get("k_m0") == pytest.approx(k_m0, rel=1e-9), params
+            assert (gear.get("N_p"), gear.get("N_g")) == (loaded.N_p, loaded.N_g)
+    finally:
+        gear.close()
+
+
+def test_the_built_in_maps_refuse_the_other_tooth_data(fmu_path):
+    """The built-in efficiency maps are made with the default tooth data: the map level with the
+    other one is refused, naming the tooth data it runs and the file the map was made for; the
+    drive cycle then picks the fast level, and hypoid effmap hashes the file the FMU reads."""
+    from hypoid import drivecycle, effmap
+    from hypoid.values import TABLE
+    other = "paper" if TABLE.start("tooth_data") == "loaded" else "loaded"
+    gear = Instance(fmu_path)
+    try:
+        with pytest.raises(FmuError, match=rf"tooth_data = {other}\) = 'gearsets/"):
+            gear.start({"mesh_model": "rigid", "friction_model": "map", "tooth_data": other})
+    finally:
+        gear.close()
+    assert drivecycle.default_level(293.15, [293.15], {}) == "map"
+    assert drivecycle.default_level(293.15, [293.15], {"tooth_data": other}) == "fast"
+    paper_level = drivecycle.default_level(293.15, [293.15], {"preset": "paper"})
+    assert paper_level == ("fast" if other == "paper" else "map")
+    files = effmap.source_files(fmu_path, {"gear_set": 2, "tooth_data": "paper"})
+    assert files["gear_set"].as_posix().endswith("resources/gearsets/gearset2.txt")
+    files = effmap.source_files(fmu_path, {"gear_set": 2, "tooth_data": "loaded"})
+    assert files["gear_set"].as_posix().endswith("resources/gearsets/loaded/gearset2.txt")
