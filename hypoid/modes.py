@@ -16,7 +16,31 @@ import numpy as np
 
 TABLE3 = {"I_s": 0.014, "I_p": 0.014, "I_g": 0.29, "I_w": 0.29, "k_t1": 8e5, "k_t2": 8e5}
 SET1 = {"k_m": 1.7106e8, "R_p": 21.009e-3, "ratio": 36 / 13, "N_p": 13}
-I_P_GEOMETRY = 1e-3  # [kg m^2] a 13-tooth pinion with its shaft (Table 3's 0.014 is ~10x that)
+I_P_GEOMETRY = 1e-3  # [kg m^2] a 13-tooth pinion with its shaft (Table 3's 0.014 is ~10x that;
+#                        pinion_inertia_estimate gives the head and shaft)
+STEEL_DENSITY = 7850.0  # [kg/m^3]
+PINION_SHAFT = (0.040, 0.150)  # assumed pinion shaft diameter and length [m] (not in the paper)
+
+
+def pinion_head_inertia(n=1, rho=STEEL_DENSITY):
+    """Polar inertia of gear set n's pinion head [kg m^2]: a solid steel frustum between the
+    pitch radii at the inner and outer ends of the face (Table 1's face width, pitch angle and
+    outer cone distance; the teeth above and the tooth spaces below the pitch cone roughly
+    cancel): I = pi rho h (r_o^5 - r_i^5) / (10 (r_o - r_i)), h the axial face length."""
+    from hypoid import tca_surrogate as sur
+
+    bl = sur.TABLE_1[n]
+    r_o = bl.R_e1 * math.sin(bl.delta_1)
+    r_i = (bl.R_e1 - bl.b_1) * math.sin(bl.delta_1)
+    h = bl.b_1 * math.cos(bl.delta_1)
+    return math.pi * rho * h * (r_o ** 5 - r_i ** 5) / (10.0 * (r_o - r_i))
+
+
+def pinion_inertia_estimate(n=1, shaft=PINION_SHAFT, rho=STEEL_DENSITY):
+    """(head, head + a solid shaft of the assumed diameter and length) [kg m^2]."""
+    d, length = shaft
+    head = pinion_head_inertia(n, rho)
+    return head, head + math.pi * rho * length * d ** 4 / 32.0
 
 
 @dataclasses.dataclass
@@ -78,6 +102,23 @@ def dampers(s, zeta):
     return c if np.all(c >= 0.0) else None
 
 
+def zetas(s, c):
+    """The modal damping ratios of modes 2-4 that dampers c = (c_t1, c_m, c_t2) give (modal
+    cross-coupling neglected, as in the exact solve)."""
+    w, phi = modes(s)
+    C = s.damping(c)
+    return [float(phi[:, i] @ C @ phi[:, i] / (2.0 * w[i])) for i in (1, 2, 3)]
+
+
+def fallback_row(s, c):
+    """A table row (as report() writes them) for dampers the FMU chose itself."""
+    w, _ = modes(s)
+    z = zetas(s, c)
+    g = [dte_gain(s, c, w[i]) for i in (1, 2, 3)]
+    return (f"| {z[0]:.3f} | {z[1]:.3f} | {z[2]:.3f} | {c[0]:.3g}, {c[1]:.3g}, {c[2]:.3g} | "
+            + " / ".join(f"{x:.1f}" for x in g) + f" | {g[0] / g[1]:.2f} |")
+
+
 def dte_gain(s, c, omega):
     """|x / e_0| at the excitation frequency omega: the mesh force k_m (x - e_0) + c_m (x' - e_0')
     driven by e_0 alone."""
@@ -127,9 +168,9 @@ ZETAS = [z for z in itertools.product((0.01, 0.02, 0.04, 0.08), (0.01, 0.02, 0.0
                                        (0.03,))]
 
 
-def report(s, label):
+def report(s, label, level="##"):
     w, phi = modes(s)
-    lines = [f"## {label}", "",
+    lines = [f"{level} {label}", "",
              "| mode | f [Hz] | resonance [rpm] | shape (phi_s, phi_p, phi_g, phi_w), max = 1 "
              "| mesh share of strain energy |",
              "|---|---|---|---|---|"]
@@ -147,31 +188,46 @@ def report(s, label):
               "that at mode 3.", "", "Damping sets by modal ratios (the FMU's exact solve):", "",
               "| zeta_2 | zeta_3 | zeta_4 | c_t1, c_m, c_t2 | DTE gain at mode 2 / 3 / 4 "
               "| mode 2 / mode 3 |", "|---|---|---|---|---|---|"]
-    for z, c, gains in gain_table(s, ZETAS):
+    rows = gain_table(s, ZETAS)
+    for z, c, gains in rows:
         if c is None:
-            lines.append(f"| {z[0]} | {z[1]} | {z[2]} | needs a negative damper | | |")
             continue
         lines.append(f"| {z[0]} | {z[1]} | {z[2]} | {c[0]:.3g}, {c[1]:.3g}, {c[2]:.3g} | "
                      + " / ".join(f"{x:.1f}" for x in gains) + f" | {gains[0] / gains[1]:.2f} |")
+    bad = [z for z, c, _ in rows if c is None]
+    lines += ["", f"The other {len(bad)} of the {len(rows)} ratio sets (zeta_2, zeta_3 each 0.01, "
+              "0.02, 0.04 or 0.08; zeta_4 = 0.03) need a negative damper."]
     return "\n".join(lines)
 
 
-def findings_section():
+def findings_section(k_m=SET1["k_m"], R_p=SET1["R_p"]):
     """The report's modal section: why Table 3's inertias put the strongest DTE resonance at
-    mode 2 (~1200 rpm), and where the geometric pinion inertia moves it (docs/paper-findings.md)."""
-    t3, geo = system(), system(I_p=I_P_GEOMETRY)
+    mode 2 (~1200 rpm), and where the geometric pinion inertia moves it, with the mode shapes and
+    the DTE gains per damping set at the study's mean mesh stiffness and lever arm."""
+    t3, geo = system(k_m=k_m, R_p=R_p), system(k_m=k_m, R_p=R_p, I_p=I_P_GEOMETRY)
     (w3, _), (wg, _) = modes(t3), modes(geo)
-    lo3, hi3 = damper_scan(t3, n=6)
-    log, hig = damper_scan(geo, n=6)
+    lo3, hi3 = damper_scan(t3)
+    log, hig = damper_scan(geo)
     return "\n".join([
         "## Why the 2000 rpm findings need another pinion inertia (modal analysis)", "",
         f"With Table 3's inertias mode 2 sits at {rpm(t3, w3[1]):.0f} rpm and mode 3 at "
         f"{rpm(t3, w3[2]):.0f} rpm; over non-negative damper sets the DTE's response to the "
         f"transmission error is {lo3:.2f}-{hi3:.1f} times larger at mode 2, so the separating "
         "resonance is mode 2's. With the pinion inertia of a 13-tooth pinion and its shaft "
-        f"(I_p = {I_P_GEOMETRY} kg m^2) mode 3 moves to {rpm(geo, wg[2]):.0f} rpm and mode 2's "
-        f"gain is {log:.2f}-{hig:.1f} times mode 3's (`python -m hypoid.modes` prints the mode "
-        "shapes and the gains per damping set; docs/paper-findings.md the what-if study).", ""])
+        f"(I_p = {I_P_GEOMETRY} kg m^2; {_estimate_text()}) mode 3 moves to "
+        f"{rpm(geo, wg[2]):.0f} rpm and mode 2's "
+        f"gain is {log:.2f}-{hig:.1f} times mode 3's (the what-if section below runs it; "
+        "`python -m hypoid.modes` prints these tables; docs/paper-findings.md).", "",
+        report(t3, "Table 3 (I_p = 0.014 kg m^2)", "###"), "",
+        report(geo, f"Pinion inertia from its geometry (I_p = {I_P_GEOMETRY} kg m^2)", "###"),
+        ""])
+
+
+def _estimate_text():
+    head, both = pinion_inertia_estimate(1)
+    d, length = PINION_SHAFT
+    return (f"Table 1's pinion head as a steel frustum gives {head:.2g} kg m^2, with a "
+            f"{1e3 * d:.0f} mm x {1e3 * length:.0f} mm shaft {both:.2g}")
 
 
 def main(argv):
