@@ -55,13 +55,19 @@ def parts(out):
             "report_s": info.get("report_s", float("nan")),
             "points": len(pts), "continuation_rows": len(cont),
             "points_cpu_s": float(pts["cpu_s"].sum()),
-            "sweeps_cpu_s": {f"{t:g} N.m": float(c) for t, c in
-                             cont.groupby("T_s")["cpu_s"].sum().items()},
+            "sweeps_cpu_s": sweeps_cpu(cont),
             "lossmap_cpu_s": float(lm["cpu_s"].sum()),
             "slowest_points": [f"set {r.gear_set}, {r.T_s:g} N.m, {r.speed_rpm:g} rpm: "
                                f"{r.cpu_s:.2f} s" for r in slow.itertuples()],
             "settle_s_simulated": float(pts["settle_time_s"].sum() + cont["settle_time_s"].sum()),
             "converged": int(pts["converged"].sum() + cont["converged"].sum())}
+
+
+def sweeps_cpu(cont):
+    """CPU of each continuation sweep, by torque (and inertia, where a what-if sweeps too)."""
+    keys = ["T_s"] + (["I_p"] if "I_p" in cont else [])
+    return {f"{k[0]:g} N.m" + (f", I_p {k[1]:g}" if len(k) > 1 else ""): float(c)
+            for k, c in cont.groupby(keys)["cpu_s"].sum().items()}
 
 
 def main():

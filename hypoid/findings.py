@@ -6,7 +6,7 @@ import numpy as np
 import pandas as pd
 
 from hypoid.tables import (BUILTIN_LUBRICANTS, PAPER_EHL, REFERENCE, calibration_probes, curve,  # noqa: F401
-                           prepare, resonances, select)
+                           prepare, resonances, select, whatifs)
 
 DIP_MIN = 2e-4  # an efficiency dip counts when 0.02 percentage points below the trend
 FADE = 0.35  # ... and has faded when below this fraction of the low-torque dips
@@ -48,9 +48,9 @@ def dip(eta, n_res):
     return float(np.max(chord - inner.to_numpy()))
 
 
-def branches(cont, gear_set, torque):
+def branches(cont, gear_set, torque, **where):
     """Up and down branches of a continuation sweep merged by speed."""
-    sel = select(cont, gear_set=gear_set, T_s=torque)
+    sel = select(cont, gear_set=gear_set, T_s=torque, **where)
     if sel.empty:
         return pd.DataFrame()
     cols = ["DTE_pp_um", "DTE_min_minus_b_um", "contact_loss_fraction", "eta_rms"]
@@ -59,9 +59,9 @@ def branches(cont, gear_set, torque):
     return up.merge(down, left_index=True, right_index=True, suffixes=("_up", "_down"))
 
 
-def jump(cont, gear_set, torque, n_res, half_width=250.0):
+def jump(cont, gear_set, torque, n_res, half_width=250.0, **where):
     """Two-branch (hysteresis) band and separation near a resonance."""
-    b = branches(cont, gear_set, torque)
+    b = branches(cont, gear_set, torque, **where)
     if b.empty:
         return None
     b = b[(b.index - n_res).__abs__() <= half_width]
@@ -79,6 +79,10 @@ def jump(cont, gear_set, torque, n_res, half_width=250.0):
 
 
 # ---------------------------------------------------------------------------- findings
+def _where(where):
+    return "".join(f", {k} = {v:g}" for k, v in where.items())
+
+
 def _finding(fid, figure, paper, measure, ok, at=""):
     verdict = "diagnostic" if ok is None else ("reproduced" if ok else "not reproduced")
     return {"id": fid, "figure": figure, "paper": paper, "at": at, "this FMU": measure,
@@ -113,7 +117,7 @@ def swapped_alpha(pts, torque=100.0):
 def resonance_dips(pts, mode, gear_set=1, low=(50.0, 100.0), high=(200.0, 300.0), suffix="",
                    **where):
     """Dip at the resonance of `mode` ('f2' or 'f3') for each torque, and the verdict."""
-    n_res = resonances(pts, gear_set).get(mode)
+    n_res = resonances(pts, gear_set, **where).get(mode)
     if n_res is None:
         return None, {}
     dips = {t: dip(curve(pts, gear_set=gear_set, lubricant=1, lubricant_file="", T_s=t,
@@ -127,25 +131,24 @@ def resonance_dips(pts, mode, gear_set=1, low=(50.0, 100.0), high=(200.0, 300.0)
     return _finding(f"F3-{mode}{suffix}", "6a, 8",
                     "efficiency dips near the mesh resonance at 50 and 100 N·m; the dip fades at "
                     "200 and 300 N·m", f"dip below the trend [%-points] {measure}", ok,
-                    f"{n_res:.0f} rpm (mode {mode[1]})"
-                    + "".join(f", {k} = {v:g}" for k, v in where.items())), dips
+                    f"{n_res:.0f} rpm (mode {mode[1]})" + _where(where)), dips
 
 
-def jump_finding(cont, torque, mode, pts, gear_set=1):
-    n_res = resonances(pts, gear_set).get(mode)
-    j = jump(cont, gear_set, torque, n_res) if n_res else None
+def jump_finding(cont, torque, mode, pts, gear_set=1, suffix="", **where):
+    n_res = resonances(pts, gear_set, **where).get(mode)
+    j = jump(cont, gear_set, torque, n_res, **where) if n_res else None
     text = ("jump phenomenon: two DTE branches near resonance, DTE minimum below the half "
             "backlash (tooth separation)")
     if j is None:
-        return _finding(f"F4-{mode}-{torque:g}", "9", text, "no data", None), None
+        return _finding(f"F4-{mode}-{torque:g}{suffix}", "9", text, "no data", None), None
     two = j["speeds_two_branches"]
     band = speed_range(two) if two else "none"
     ok = bool(two) and j["min_DTE_min_minus_b_um"] < 0
-    return _finding(f"F4-{mode}-{torque:g}", "9", text,
+    return _finding(f"F4-{mode}-{torque:g}{suffix}", "9", text,
                     f"two branches: {band} (largest up/down gap {j['max_branch_gap_um']:.1f} µm);"
                     f" min(DTE) - b = {j['min_DTE_min_minus_b_um']:.1f} µm; contact lost up to "
                     f"{100 * j['max_contact_loss']:.0f} % of the time", ok,
-                    f"{torque:g} N·m near {n_res:.0f} rpm (mode {mode[1]})"), j
+                    f"{torque:g} N·m near {n_res:.0f} rpm (mode {mode[1]})" + _where(where)), j
 
 
 def away_from_resonance(speeds, res, margin=150.0):
@@ -218,16 +221,16 @@ def regime_finding(pts, trace_dir, speed=1000.0):
                     None, f"{speed:g} rpm")
 
 
-def contact_loss_at(pts, speed, torque=100.0, gear_set=1):
+def contact_loss_at(pts, speed, torque=100.0, gear_set=1, **where):
     sel = select(pts, gear_set=gear_set, lubricant=1, lubricant_file="", T_s=torque,
-                 speed_rpm=speed)
+                 speed_rpm=speed, **where)
     return None if sel.empty else sel.iloc[0]
 
 
-def resonance_load(pts, near, away=5000.0, torque=100.0, fid="F6"):
+def resonance_load(pts, near, away=5000.0, torque=100.0, fid="F6", **where):
     """Fig. 10: near resonance, contact is lost part of the cycle, the mean load while in
     contact and the mean friction coefficient are higher than away from resonance."""
-    a, b = contact_loss_at(pts, near, torque), contact_loss_at(pts, away, torque)
+    a, b = contact_loss_at(pts, near, torque, **where), contact_loss_at(pts, away, torque, **where)
     text = ("near resonance the teeth separate during the cycle (zero friction), and the mean "
             "contact load and friction coefficient are higher than away from resonance")
     if a is None or b is None:
@@ -239,39 +242,179 @@ def resonance_load(pts, near, away=5000.0, torque=100.0, fid="F6"):
                     f"{100 * b['contact_loss_fraction']:.0f} % of the time; mean load in contact "
                     f"{a['W_t_mean_contact_N']:.0f} vs {b['W_t_mean_contact_N']:.0f} N; mean mu "
                     f"{a['mu_mean']:.4f} vs {b['mu_mean']:.4f}", ok,
-                    f"{torque:g} N·m, {near:g} vs {away:g} rpm")
+                    f"{torque:g} N·m, {near:g} vs {away:g} rpm" + _where(where))
 
 
 def all_findings(pts, cont, trace_dir=None):
     """Every finding the tables allow, as a DataFrame (one row each)."""
     pts, cont = prepare(pts), prepare(cont)
     rows = [lubricant_ranking(pts), swapped_alpha(pts)]
-    for mode in ("f2", "f3"):
-        f, _ = resonance_dips(pts, mode)
-        if f:
-            rows.append(f)
+    rows += resonance_findings(pts, cont)
     for e0 in calibration_probes(pts):
         for mode in ("f2", "f3"):
             f, _ = resonance_dips(pts, mode, suffix=f"-e0x{e0:g}", e_0_scale=e0)
             if f:
                 rows.append(f)
-    if not cont.empty:
-        for t in sorted(select(cont, gear_set=1)["T_s"].unique()):
-            for mode in ("f2", "f3"):
-                rows.append(jump_finding(cont, t, mode, pts)[0])
     rows.append(gear_sets(pts))
     rows.append(gear_set_dte(pts))
-    res = resonances(pts, 1)
-    for i, (mode, n) in enumerate(sorted(res.items())):
-        near = _nearest_speed(pts, n)
-        if near is not None:
-            rows.append(resonance_load(pts, near, fid=f"F6-{mode}"))
+    for where in whatifs(pts):
+        rows += resonance_findings(pts, cont, suffix=_suffix(where), **where)
     rows.append(regime_finding(pts, trace_dir))
     return pd.DataFrame([r for r in rows if r])
 
 
-def _nearest_speed(pts, n):
-    s = curve(pts, gear_set=1, lubricant=1, lubricant_file="", T_s=100.0)
+def _suffix(where):
+    return "".join(f"-{k}={v:g}" for k, v in where.items())
+
+
+def resonance_findings(pts, cont, suffix="", **where):
+    """F3, F4 and F6 at both mesh resonances of gear set 1 (of a what-if when `where` sets
+    its parameters)."""
+    rows = []
+    for mode in ("f2", "f3"):
+        f, _ = resonance_dips(pts, mode, suffix=suffix, **where)
+        if f:
+            rows.append(f)
+    if not cont.empty:
+        for t in sorted(select(cont, gear_set=1, **where)["T_s"].unique()):
+            for mode in ("f2", "f3"):
+                f, j = jump_finding(cont, t, mode, pts, suffix=suffix, **where)
+                if j is not None or not suffix:  # a what-if's sweeps cover its mode 3 only
+                    rows.append(f)
+    for mode, n in sorted(resonances(pts, 1, **where).items()):
+        near = _nearest_speed(pts, n, **where)
+        if near is not None:
+            rows.append(resonance_load(pts, near, fid=f"F6-{mode}{suffix}", **where))
+    return rows
+
+
+def _nearest_speed(pts, n, torque=100.0, **where):
+    s = curve(pts, gear_set=1, lubricant=1, lubricant_file="", T_s=torque, **where)
     if s.empty:
         return None
     return float(s.index[np.argmin(np.abs(s.index - n))])
+
+
+# ---------------------------------------------------------------------------- detail numbers
+def _pair_peak(trace_dir, row):
+    """Tooth pair 1's peak contact load over the traced window [N], or None."""
+    from hypoid import results
+
+    key = getattr(row, "point_key", None)
+    if trace_dir is None or not key:
+        return None
+    tr = results.read_trace(trace_dir, key)
+    return None if tr is None or "pair[1].W" not in tr else float(tr["pair[1].W"].max())
+
+
+def _row_numbers(row, trace_dir):
+    out = {k: float(getattr(row, k)) for k in
+           ("eta_rms", "DTE_pp_um", "DTE_min_minus_b_um", "contact_loss_fraction",
+            "W_t_mean_contact_N", "mu_mean", "h_c_mean_um", "lambda_mean")}
+    out["pair_peak_N"] = _pair_peak(trace_dir, row)
+    return out
+
+
+def variant_numbers(pts, cont, trace_dir=None, **where):
+    """The numbers docs/paper-findings.md quotes for gear set 1 at the reference inertias or a
+    what-if: resonance speeds; per torque the strongest DTE peak, the DTE, separation and dip at
+    each resonance, and the continuation's branches; the traced points near and away from
+    resonance (Fig. 10)."""
+    res = resonances(pts, 1, **where)
+    out = {"resonance_rpm": res, "torques": {}, "traced": {}}
+    for t in sorted(select(pts, gear_set=1, lubricant=1, lubricant_file="", **where)["T_s"]
+                    .unique()):
+        sel = select(pts, gear_set=1, lubricant=1, lubricant_file="", T_s=t, **where)
+        by = sel.groupby("speed_rpm").mean(numeric_only=True).sort_index()
+        lost = by[by["contact_loss_fraction"] > 0]
+        d = {"peak_rpm": float(by["DTE_pp_um"].idxmax()), "peak_DTE_pp_um":
+             float(by["DTE_pp_um"].max()),
+             "separation_rpm": [float(x) for x in lost.index],
+             "max_contact_loss": float(by["contact_loss_fraction"].max())}
+        for mode, n in res.items():
+            near = float(by.index[np.argmin(np.abs(by.index - n))])
+            r = by.loc[near]
+            d[mode] = {"rpm": near, "DTE_pp_um": float(r["DTE_pp_um"]),
+                       "DTE_min_minus_b_um": float(r["DTE_min_minus_b_um"]),
+                       "contact_loss_fraction": float(r["contact_loss_fraction"]),
+                       "dip": dip(by["eta_rms"], n)}
+            j = jump(cont, 1, t, n, **where) if not cont.empty else None
+            if j is not None:
+                d[mode]["jump"] = j
+        out["torques"][f"{t:g}"] = d
+    if "trace" in pts:
+        tr = select(pts, gear_set=1, lubricant=1, lubricant_file="", **where)
+        tr = tr[tr["trace"].fillna("").astype(str) != ""]
+        for row in tr.sort_values(["T_s", "speed_rpm"]).itertuples():
+            out["traced"][f"{row.T_s:g}@{row.speed_rpm:g}"] = _row_numbers(row, trace_dir)
+    return out
+
+
+def gear_set_numbers(pts, torque=100.0):
+    """Fig. 11's explanation: mean load in contact, friction and film of sets 2 and 3 over the
+    speeds away from their resonances, and their lever arms."""
+    out = {}
+    for gs in (2, 3):
+        sel = select(pts, gear_set=gs, lubricant=1, lubricant_file="", T_s=torque)
+        if sel.empty:
+            continue
+        away = sel[away_from_resonance(sel["speed_rpm"], resonances(pts, gs))]
+        out[str(gs)] = {"R_p0_mm": float(1e3 * sel["R_p0"].iloc[0]) if "R_p0" in sel else None,
+                        "W_t_mean_contact_N": float(away["W_t_mean_contact_N"].mean()),
+                        "mu_mean": float(away["mu_mean"].mean()),
+                        "lambda_mean": float(away["lambda_mean"].mean())}
+    return out
+
+
+def probe_numbers(pts, e0):
+    """The calibration probe (e_0_scale = e0): per torque the dip and the contact loss at the
+    grid speed nearest each resonance of gear set 1."""
+    out = {}
+    for t in sorted(select(pts, gear_set=1, e_0_scale=e0)["T_s"].unique()):
+        by = select(pts, gear_set=1, lubricant=1, lubricant_file="", T_s=t, e_0_scale=e0) \
+            .groupby("speed_rpm").mean(numeric_only=True).sort_index()
+        d = {}
+        for mode, n in resonances(pts, 1).items():
+            near = float(by.index[np.argmin(np.abs(by.index - n))])
+            d[mode] = {"rpm": near, "dip": dip(by["eta_rms"], n),
+                       "contact_loss_fraction": float(by.loc[near, "contact_loss_fraction"]),
+                       "DTE_min_minus_b_um": float(by.loc[near, "DTE_min_minus_b_um"])}
+        out[f"{t:g}"] = d
+    return out
+
+
+def lubricant_numbers(pts, torque=100.0):
+    """Fig. 7's residual: eta(OS265962) - eta(OS265963 with OS265962's alpha*) by speed."""
+    one, _, swap = reference_lubricants(pts, torque)
+    res = (one - swap).dropna()
+    return {f"{n:g}": float(v) for n, v in res.items()}
+
+
+def sensitivity_numbers(pts, extra, torque=100.0):
+    """eta_rms by speed of the reference and of each sensitivity variant (label, params) of a
+    study, gear set 1 at `torque` (the full study's table)."""
+    out = {"reference": {f"{n:g}": float(v) for n, v in
+                         curve(pts, gear_set=1, lubricant=1, lubricant_file="", T_s=torque)
+                         .items()}}
+    for label, params in extra:
+        if "e_0_scale" in params:
+            continue  # the calibration probe has its own numbers
+        sel = select(pts, gear_set=1, T_s=torque, **params)
+        if "lubricant" not in params:
+            sel = sel[(sel["lubricant"] == 1) & (sel["lubricant_file"] == "")]
+        out[label] = {f"{n:g}": float(v) for n, v in
+                      sel.groupby("speed_rpm")["eta_rms"].mean().items()}
+    return out
+
+
+def details(pts, cont, trace_dir=None, extra=()):
+    """Every detail number of docs/paper-findings.md, as plain data (JSON-able); `extra`: the
+    study's sensitivity variants (label, params)."""
+    pts, cont = prepare(pts), prepare(cont)
+    return {"reference": variant_numbers(pts, cont, trace_dir),
+            "whatif": [{"where": w, **variant_numbers(pts, cont, trace_dir, **w)}
+                       for w in whatifs(pts)],
+            "gear_sets": gear_set_numbers(pts),
+            "lubricants": lubricant_numbers(pts),
+            "probes": {f"{e0:g}": probe_numbers(pts, e0) for e0 in calibration_probes(pts)},
+            "sensitivity": sensitivity_numbers(pts, extra) if extra else {}}

@@ -27,12 +27,17 @@ def _save(fig, out, name):
     return path
 
 
-def _resonance_lines(ax, pts, gear_set=1, color="0.45", label=True, y=0.99):
-    for mode, n in tb.resonances(pts, gear_set).items():
+def _resonance_lines(ax, pts, gear_set=1, color="0.45", label=True, y=0.99, **where):
+    for mode, n in tb.resonances(pts, gear_set, **where).items():
         ax.axvline(n, color=color, ls=":", lw=1.2, zorder=0)
         if label:
             ax.text(n, y, f" mode {mode[1]}\n {n:.0f} rpm", transform=ax.get_xaxis_transform(),
                     va="top", ha="left", fontsize=7.5, color=color)
+
+
+def _inertias(where):
+    """The what-if part of a selection (its resonances differ from the reference's)."""
+    return {k: v for k, v in where.items() if k in tb.WHATIF_COLUMNS}
 
 
 def _eta_axis(ax):
@@ -59,7 +64,7 @@ def fig8_torque(pts, out, name="fig8_efficiency_torque", note="", **where):
                    label="contact lost")
         ax[1].plot(lost["speed_rpm"], lost["DTE_pp_um"], "o", mfc="none", mec="k", ms=9)
     for a in ax:
-        _resonance_lines(a, pts)
+        _resonance_lines(a, pts, **_inertias(where))
         a.grid(True, alpha=0.3)
     _eta_axis(ax[0])
     ax[0].legend(title="input torque T_s", ncol=5, fontsize=8, loc="lower right")
@@ -120,10 +125,10 @@ def fig7_swapped(pts, out, torque=100.0):
     return _save(fig, out, "fig7_swapped_alpha")
 
 
-def fig9_jump(cont, pts, out):
+def fig9_jump(cont, pts, out, name="fig9_dte_jump", note="", **where):
     """DTE peak response (max and min) on the up and down branches with the half backlash
     (paper Fig. 9), one panel per torque."""
-    sel = tb.select(cont, gear_set=1)
+    sel = tb.select(cont, gear_set=1, **where)
     if sel.empty:
         return None
     torques = sorted(sel["T_s"].unique())
@@ -142,17 +147,18 @@ def fig9_jump(cont, pts, out):
         lost = g[g["contact_loss_fraction"] > 0]
         ax.plot(lost["speed_rpm"], lost["DTE_min_um"], "o", mfc="none", mec="k", ms=9,
                 label="contact lost")
-        _resonance_lines(ax, pts)
+        _resonance_lines(ax, pts, **where)
         ax.set_ylabel("DTE [µm]")
         ax.grid(True, alpha=0.3)
         ax.set_title(f"T_s = {t:g} N·m: speed swept up then down (continuation)", fontsize=10)
     axes[-1, 0].set_xlabel("pinion speed [rpm]")
-    fig.suptitle("DTE peak response, OS265962, 40 °C, gear set 1 (paper Fig. 9)")
+    fig.suptitle("DTE peak response, OS265962, 40 °C, gear set 1 (paper Fig. 9)"
+                 + (f"\n{note}" if note else ""))
     # below the panels, where it hides neither data nor the resonance labels
     handles, labels = axes[0, 0].get_legend_handles_labels()
     fig.legend(handles, labels, fontsize=8, ncol=3, loc="lower center")
     fig.tight_layout(rect=(0, 0.07 / len(torques) + 0.02, 1, 0.98))
-    return _save(fig, out, "fig9_dte_jump")
+    return _save(fig, out, name)
 
 
 def engagement(trace, pair=1):
@@ -168,10 +174,10 @@ def engagement(trace, pair=1):
     return x[order], trace[rows].iloc[order]
 
 
-def fig10_mesh_cycle(pts, out, torque=100.0):
+def fig10_mesh_cycle(pts, out, torque=100.0, name="fig10_mesh_cycle", note="", **where):
     """Contact load and friction coefficient of one tooth pair over its engagement near and
     away from resonance (paper Fig. 10)."""
-    sel = tb.select(pts, gear_set=1, lubricant=1, lubricant_file="", T_s=torque)
+    sel = tb.select(pts, gear_set=1, lubricant=1, lubricant_file="", T_s=torque, **where)
     if "trace" not in sel:
         return None
     sel = sel[sel["trace"].fillna("").astype(str) != ""].sort_values("speed_rpm")
@@ -199,8 +205,8 @@ def fig10_mesh_cycle(pts, out, torque=100.0):
     ax[1].legend(fontsize=8, loc="upper right", title_fontsize=8,
                  title="mu_mean: load-weighted over all pairs and the window (as in the table)")
     ax[0].set_title(f"One tooth pair over its engagement, T_s = {torque:g} N·m, OS265962, "
-                    "gear set 1 (paper Fig. 10)")
-    return _save(fig, out, "fig10_mesh_cycle")
+                    "gear set 1 (paper Fig. 10)" + (f"\n{note}" if note else ""))
+    return _save(fig, out, name)
 
 
 def fig11_gear_sets(pts, out, torque=100.0):
@@ -367,5 +373,16 @@ def all_figures(pts, cont, out, lossmap=None, workers=0):
         jobs[f"fig8-e0x{e0:g}"] = partial(
             fig8_torque, pts, out, f"fig8_efficiency_torque_e0x{e0:g}",
             f"calibration probe: transmission error e_0 x {e0:g} (e_0_scale)", e_0_scale=e0)
+    for where in tb.whatifs(pts):
+        tag = "".join(f"_{k}{v:g}" for k, v in where.items())
+        note = "what-if: " + ", ".join(f"{k} = {v:g}" for k, v in where.items())
+        jobs[f"fig8{tag}"] = partial(fig8_torque, pts, out, f"fig8_efficiency_torque{tag}", note,
+                                     **where)
+        if not cont.empty:
+            jobs[f"fig9{tag}"] = partial(fig9_jump, cont, pts, out, f"fig9_dte_jump{tag}", note,
+                                         **where)
+        for t in (50.0, 100.0):
+            jobs[f"fig10{tag}_{t:g}"] = partial(fig10_mesh_cycle, pts, out, t,
+                                                f"fig10_mesh_cycle{tag}_{t:g}Nm", note, **where)
     made = dict(zip(jobs, parallel.call_all(list(jobs.values()), workers)))
     return {k: v for k, v in made.items() if v is not None}

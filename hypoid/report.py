@@ -102,7 +102,16 @@ def _header(pts_all, cont_all, info, find, modal):
             "parameters f_2..f_4); resonance speed n = 60 f / N_p.", "",
             md_table(modal, {"ratio": 3, "f_2 [Hz]": 1, "f_3 [Hz]": 1, "f_4 [Hz]": 1,
                              "n(f_2) [rpm]": 0, "n(f_3) [rpm]": 0, "n(f_4) [rpm]": 0},
-                     index=False), "", modes.findings_section(), ""]
+                     index=False), "", _modal_section(modal), ""]
+
+
+def _modal_section(modal):
+    """hypoid.modes at gear set 1's mean mesh stiffness and lever arm as the study ran them."""
+    ref = modal[modal["gear set"].astype(str) == "1"]
+    if ref.empty:
+        return modes.findings_section()
+    return modes.findings_section(float(ref["k_m0 [N/m]"].iloc[0]),
+                                  float(ref["R_p0 [m]"].iloc[0]))
 
 
 def _pivot_lines(t, columns=None):
@@ -247,14 +256,16 @@ def _lossmap_section(lm, figs):
                 *_lossmap_comparison(lm), ""]
 
 
-def write(out, pts, cont, info, figs, find, modal, lossmap=None):
+def write(out, pts, cont, info, figs, find, modal, lossmap=None, det=None):
     """Writes report.md into `out` from the raw tables, the figures {key: path}, the findings,
-    the modal table and the axle's loss map (hypoid.study makes them); returns the path."""
+    the modal table, the axle's loss map and the detail numbers (findings.details; hypoid.study
+    makes them); returns the path."""
     ok_pts, ok_cont = tb.prepare(pts), tb.prepare(cont)
     L = _header(pts, cont, info, find, modal)
     L += _torque_section(ok_pts, figs)
     L += _jump_section(ok_cont, figs)
     L += _engagement_section(ok_pts, figs)
+    L += _whatif_section(det, figs) if det else []
     L += _lossmap_section(lossmap, figs)
     if info.get("extra"):
         L += ["## Sensitivity runs (efficiency [%], 100 N·m, gear set 1)", "",
@@ -267,20 +278,126 @@ def write(out, pts, cont, info, figs, find, modal, lossmap=None):
 
 
 def _extra_table(pts, extra):
-    base = tb.curve(pts, gear_set=1, lubricant=1, lubricant_file="", T_s=100.0)
-    cols = {"reference (OS265962, 40 °C, ehl_thermal, varying)": base}
-    for label, params in extra:
-        ref = {**tb.REFERENCE, **params}
-        sel = pts
-        for k, v in ref.items():
-            if k in sel:
-                sel = sel[sel[k].astype(str) == str(v)] if isinstance(v, str) else \
-                    sel[np.isclose(sel[k].astype(float), float(v))]
-        sel = sel[(sel["gear_set"] == 1) & np.isclose(sel["T_s"], 100.0)]
-        if "lubricant" not in params:
-            sel = sel[(sel["lubricant"] == 1) & (sel["lubricant_file"] == "")]
-        cols[label] = sel.groupby("speed_rpm")["eta_rms"].mean()
-    t = pd.DataFrame(cols).dropna() * 100
+    return sensitivity_table(fd.sensitivity_numbers(pts, extra))
+
+
+def sensitivity_table(sens):
+    """eta [%] by speed: the reference and each sensitivity variant (findings'
+    sensitivity_numbers), at the speeds all of them ran."""
+    cols = {("reference (OS265962, 40 °C, ehl_thermal, varying)" if k == "reference" else k):
+            pd.Series({float(n): v for n, v in s.items()}) for k, s in sens.items()}
+    t = pd.DataFrame(cols).dropna().sort_index() * 100
     t.index = [f"{x:g}" for x in t.index]
     t.index.name = "speed [rpm]"
     return md_table(t, {c: 3 for c in t.columns})
+
+
+# ---------------------------------------------------------------------------- the what-if
+PAPER_COLUMN = {  # what Paouris et al. report near 2000 rpm (Figs. 8-10), in our words
+    "strongest": "near 2000 rpm",
+    "dip_f3": "a dip at 50 and 100 N·m, none at 200 and 300 N·m",
+    "dip_f2": "not reported",
+    "separation": "at 100 N·m near 2000 rpm (Figs. 9, 10)",
+    "jump": "at 100 N·m near 2000 rpm",
+    "load": "higher near resonance than at 5000 rpm, with zero-friction gaps",
+}
+
+
+def _per_torque(v, fmt, torques):
+    """One value per torque of the reference's grid, '–' where the variant has none."""
+    return " / ".join(fmt(v["torques"][t]) if t in v["torques"] else "–" for t in torques)
+
+
+def _band(speeds):
+    return fd.speed_range(speeds) if speeds else "none"
+
+
+def _jump_text(d, mode):
+    j = d.get(mode, {}).get("jump")
+    if j is None:
+        return "not swept"
+    two = j["speeds_two_branches"]
+    return (f"{_band(two)} (gap {j['max_branch_gap_um']:.1f} µm)" if two else
+            f"none (gap ≤ {j['max_branch_gap_um']:.1f} µm)")
+
+
+def _load_text(v, mode, torque="100", within=150.0):
+    res = v["resonance_rpm"].get(mode)
+    near = [k for k in v["traced"] if k.startswith(torque + "@")
+            and res is not None and abs(float(k.split("@")[1]) - res) <= within]
+    if res is None or not near:
+        return "not traced"
+    k = min(near, key=lambda s: abs(float(s.split("@")[1]) - res))
+    away = v["traced"].get(f"{torque}@5000")
+    a = v["traced"][k]
+    text = (f"{k.split('@')[1]} rpm: contact lost {100 * a['contact_loss_fraction']:.0f} %, "
+            f"{a['W_t_mean_contact_N']:.0f} N in contact, mu {a['mu_mean']:.4f}")
+    if away and k != f"{torque}@5000":
+        text += (f" (5000 rpm: {away['W_t_mean_contact_N']:.0f} N, mu "
+                 f"{away['mu_mean']:.4f})")
+    return text
+
+
+def whatif_rows(det):
+    """The side-by-side table of the what-if: the paper's Figs. 8-10, the reference (Table 3)
+    and each what-if, from findings.details."""
+    variants = [("Table 3 (I_p = 0.014 kg·m²)", det["reference"])] + [
+        (", ".join(f"{k} = {v:g}" for k, v in w["where"].items()), w) for w in det["whatif"]]
+    if not det["whatif"]:
+        return []
+    ts = list(det["reference"]["torques"])
+    torques = "/".join(ts)
+
+    def each(fmt):
+        return lambda v: _per_torque(v, fmt, ts)
+
+    def dips(mode):
+        return each(lambda d: f"{100 * d[mode]['dip']:.3f}"
+                    if mode in d and np.isfinite(d[mode]["dip"]) else "–")
+
+    rows = [
+        ("resonance speeds, mode 2 / mode 3 [rpm]", "–",
+         lambda v: " / ".join(f"{v['resonance_rpm'][m]:.0f}" for m in ("f2", "f3"))),
+        (f"strongest DTE peak at {torques} N·m [rpm: µm p-p]", PAPER_COLUMN["strongest"],
+         each(lambda d: f"{d['peak_rpm']:g}: {d['peak_DTE_pp_um']:.0f}")),
+        (f"efficiency dip at mode 3, {torques} N·m [%-points]", PAPER_COLUMN["dip_f3"],
+         dips("f3")),
+        (f"efficiency dip at mode 2, {torques} N·m [%-points]", PAPER_COLUMN["dip_f2"],
+         dips("f2")),
+        (f"min DTE − b near mode 3, {torques} N·m [µm]", "below 0 at 100 N·m",
+         each(lambda d: f"{d['f3']['DTE_min_minus_b_um']:.1f}")),
+        (f"tooth separation (grid speeds), {torques} N·m", PAPER_COLUMN["separation"],
+         each(lambda d: _band(d["separation_rpm"]))),
+        ("jump (two branches) near mode 3, swept torques", PAPER_COLUMN["jump"],
+         lambda v: "; ".join(f"{t} N·m: {_jump_text(d, 'f3')}" for t, d in v["torques"].items()
+                             if "jump" in d.get("f3", {}))),
+        ("jump near mode 2, swept torques", "not reported",
+         lambda v: "; ".join(f"{t} N·m: {_jump_text(d, 'f2')}" for t, d in v["torques"].items()
+                             if "jump" in d.get("f2", {})) or "not swept"),
+        ("one engagement near mode 3, 100 N·m (Fig. 10)", PAPER_COLUMN["load"],
+         lambda v: _load_text(v, "f3")),
+        ("the same at 50 N·m", "–", lambda v: _load_text(v, "f3", "50")),
+    ]
+    head = "| | paper (Figs. 8–10) | " + " | ".join(n for n, _ in variants) + " |"
+    lines = [head, "|" + "---|" * (2 + len(variants))]
+    for label, paper, fn in rows:
+        lines.append(f"| {label} | {paper} | " + " | ".join(fn(v) or "–" for _, v in variants)
+                     + " |")
+    return lines
+
+
+def _whatif_section(det, figs):
+    lines = whatif_rows(det)
+    if not lines:
+        return []
+    L = ["## What-if: the pinion inertia from the pinion's geometry", "",
+         "Gear set 1 with only the pinion inertia changed (everything else Table 3's and the "
+         "study's), beside the reference and the paper. Dips are below the chord between the "
+         f"grid speeds {fd.EDGE_RPM:g} rpm either side of each resonance; 'contact lost' is the "
+         "share of the window with the teeth apart; b is the half backlash.", "", *lines, ""]
+    for key in [k for k in figs if k.startswith(("fig8_", "fig9_", "fig10_"))]:
+        number, rest = key[3:].split("_", 1)
+        torque = f", {rest.rsplit('_', 1)[1]} N·m" if number == "10" else ""
+        _image(L, figs, key, f"What-if: paper Fig. {number}{torque} with the pinion inertia "
+               "from its geometry.")
+    return L

@@ -125,7 +125,8 @@ def half_backlash(inst):
 def model_constants(inst):
     """Per-point constants worth keeping with every row (modal frequencies, tooth count...)."""
     n_p = inst.pinion_teeth()
-    row = {name: inst.get(name) for name in ("f_2", "f_3", "f_4", "ratio", "k_m0", "R_p0")}
+    row = {name: inst.get(name) for name in ("f_2", "f_3", "f_4", "ratio", "k_m0", "R_p0",
+                                             "c_t1", "c_m", "c_t2")}
     row["N_p"] = n_p
     row["b_um"] = half_backlash(inst) * 1e6
     for k in (2, 3):

@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 
 from hypoid import cliargs, lossmap, parallel, steady, sweep
 from hypoid.instance import SPEED_KEY
+from hypoid.modes import I_P_GEOMETRY
 from hypoid.paths import user_path
 from hypoid.tables import PAPER_CHOICES
 
@@ -25,6 +26,31 @@ SWAPPED_FILE = "OS265963-alpha-OS265962.txt"
 
 def _rng(a, b, s):
     return list(range(a, b + 1, s))
+
+
+@dataclass
+class WhatIf:
+    """A variant of gear set 1 (OS265962, the paper's EHL) on its own grid and continuation
+    sweeps, reported beside the reference (docs/paper-findings.md, 'What-if')."""
+
+    label: str
+    params: dict  # what the variant changes
+    torques: list
+    speeds: list
+    sweep_torques: list
+    sweep_speeds: list
+    trace_points: list  # (T_s, speed)
+
+
+# the pinion's inertia from its geometry (hypoid.modes.I_P_GEOMETRY): mode 3 (2118 rpm) becomes
+# the strongest DTE resonance; the grid brackets it and mode 2 (1413 rpm) by 200 rpm for the
+# dips, the sweeps cross mode 3 (the paper's jump at 100 N.m, the separation at 50 N.m)
+WHATIF_IP = WhatIf("I_p from the pinion's geometry", {"I_p": I_P_GEOMETRY},
+                   torques=[50, 100, 200, 300],
+                   speeds=[1000, 1200, 1400, 1600, 1800, 1900, 2000, 2050, 2100, 2150, 2200, 2300,
+                           2400, 3000, 5000],
+                   sweep_torques=[50, 100], sweep_speeds=_rng(2000, 2300, 50),
+                   trace_points=[(50, 2100), (50, 5000), (100, 2100), (100, 5000)])
 
 
 @dataclass
@@ -39,6 +65,7 @@ class Spec:
     trace_points: list  # (T_s, speed) of gear set 1, OS265962 whose signals are kept
     sweep_sets: list = field(default_factory=lambda: [1])
     extra: list = field(default_factory=list)  # (label, base params, {name: values}) grids
+    whatif: list = field(default_factory=list)  # WhatIf variants of gear set 1
     settings: steady.Settings = field(default_factory=steady.Settings)
     ramp_time: float = 0.1
     # the axle's loss map (hypoid.lossmap): oil temperatures in degC x speeds x torques
@@ -51,7 +78,9 @@ SPECS = {
     "ci": Spec(speeds=[1000, 1200, 2000, 3000], torques=[50, 300], set_speeds=[1000, 3000],
                sweep_torques=[50], sweep_speeds=[1100, 1150, 1200, 1250],
                trace_points=[(50, 1000), (50, 1200)], loss_speeds=[1000, 2000],
-               loss_torques=[0, 50]),
+               loss_torques=[0, 50],
+               whatif=[WhatIf(WHATIF_IP.label, WHATIF_IP.params, [50], [1900, 2100, 2300], [],
+                              [], [(50, 2100)])]),
     "default": Spec(
         speeds=[800, 1000, 1100, 1150, 1200, 1250, 1300, 1400, 1600, 1800, 1900, 2000, 2100,
                 2200, 2500, 3000, 3500, 4000, 4500, 5000],
@@ -59,7 +88,8 @@ SPECS = {
         set_speeds=_rng(800, 2600, 50) + [3000, 3500, 4000, 4500, 5000],
         sweep_torques=[50, 100],
         sweep_speeds=_rng(1000, 1400, 25) + [1500, 1600, 1700] + _rng(1800, 2200, 50),
-        trace_points=[(50, 1000), (300, 1000), (100, 1200), (100, 2000), (100, 5000)]),
+        trace_points=[(50, 1000), (300, 1000), (100, 1200), (100, 2000), (100, 5000)],
+        whatif=[WHATIF_IP]),
     "full": Spec(
         speeds=_rng(500, 5000, 50),
         torques=[50, 100, 200, 300],
@@ -68,6 +98,9 @@ SPECS = {
         sweep_speeds=_rng(900, 2400, 20),
         trace_points=[(50, 1000), (300, 1000), (100, 1200), (100, 2000), (100, 5000),
                       (50, 1200), (50, 2000)],
+        whatif=[WhatIf(WHATIF_IP.label, WHATIF_IP.params, [50, 100, 200, 300],
+                       _rng(1000, 3000, 50) + [3500, 4000, 5000], [50, 100, 200, 300],
+                       _rng(1800, 2400, 20), WHATIF_IP.trace_points)],
         extra=[("bath 80 degC", {"T_bath": 353.15}, {SPEED_KEY: _rng(500, 5000, 250)}),
                ("isothermal EHL", {"friction_model": "ehl_isothermal"},
                 {SPEED_KEY: _rng(500, 5000, 250)}),
@@ -113,7 +146,32 @@ def points_of(spec, swapped_file):
         pts += sweep.grid({**g1, "T_s": 100}, {SPEED_KEY: spec.speeds})
     for t, n in spec.trace_points:
         pts.append({**g1, "T_s": t, SPEED_KEY: n})
+    for w in spec.whatif:
+        pts += sweep.grid({**g1, **w.params}, {"T_s": w.torques, SPEED_KEY: w.speeds})
+        pts += [{**g1, **w.params, "T_s": t, SPEED_KEY: n} for t, n in w.trace_points]
     return pts
+
+
+def traces_of(spec):
+    """The points whose signals are kept: the reference's and each what-if's."""
+    g1 = {"gear_set": 1, "lubricant": 1}
+    return ([{**g1, "T_s": t, SPEED_KEY: n} for t, n in spec.trace_points]
+            + [{**g1, **w.params, "T_s": t, SPEED_KEY: n} for w in spec.whatif
+               for t, n in w.trace_points])
+
+
+def sweeps_of(spec):
+    """The continuation sweeps (params without speed, speeds): the reference's, each what-if's."""
+    base = [({"gear_set": s, "lubricant": 1, "T_s": t}, spec.sweep_speeds)
+            for s in spec.sweep_sets for t in spec.sweep_torques]
+    return base + [({"gear_set": 1, "lubricant": 1, **w.params, "T_s": t}, w.sweep_speeds)
+                   for w in spec.whatif for t in w.sweep_torques]
+
+
+def varied_columns(spec):
+    """Parameters some rows of a study set besides the grid's own: every row carries them."""
+    return sorted({k for _, base, _ in spec.extra for k in base}
+                  | {k for w in spec.whatif for k in w.params})
 
 
 def paper_ehl(points):
@@ -140,14 +198,12 @@ def run(name, out, fmu_path, scheduler=None, workers=2):
     out.mkdir(parents=True, exist_ok=True)
     fmu = parallel.FmuRef(fmu_path)
     swapped = swapped_lubricant(out)
-    extra_cols = sorted({k for _, base, _ in spec.extra for k in base})
+    extra_cols = varied_columns(spec)
     points = unique(sweep.complete(paper_ehl(points_of(spec, swapped)), extra_cols))
-    traced = sweep.complete(paper_ehl([{"gear_set": 1, "lubricant": 1, "T_s": t, SPEED_KEY: n}
-                                       for t, n in spec.trace_points]), extra_cols)
-    sweeps = [({k: v for k, v in p.items() if k != SPEED_KEY}, spec.sweep_speeds)
-              for p in sweep.complete(paper_ehl([{"gear_set": s, "lubricant": 1, "T_s": t}
-                                                 for s in spec.sweep_sets
-                                                 for t in spec.sweep_torques]), extra_cols)]
+    traced = sweep.complete(paper_ehl(traces_of(spec)), extra_cols)
+    plan = sweeps_of(spec)
+    sweeps = [({k: v for k, v in p.items() if k != SPEED_KEY}, speeds) for p, (_, speeds)
+              in zip(sweep.complete(paper_ehl([p for p, _ in plan]), extra_cols), plan)]
     loss_plan = lossmap.Plan(spec.loss_temps, spec.loss_speeds, spec.loss_torques)
     t0 = time.time()
     with parallel.executor(scheduler, workers) as client:
@@ -167,6 +223,7 @@ def run(name, out, fmu_path, scheduler=None, workers=2):
             "settings": spec.settings.as_dict(), "ramp_time_s": spec.ramp_time,
             "swapped_lubricant_file": swapped,
             "extra": [(label, base) for label, base, _ in spec.extra],
+            "whatif": [(w.label, w.params) for w in spec.whatif],
             "lossmap": "lossmap.csv", "lossmap_points": len(lm),
             "lossmap_cpu_s": float(lm["cpu_s"].sum()),
             "finished": time.strftime("%Y-%m-%d %H:%M:%S")}
@@ -188,7 +245,14 @@ def write_report(out, pts, cont, info, workers=2):
     find.to_csv(out / "findings.csv", index=False)
     modal = tables.modal_table(ok_pts)
     modal.to_csv(out / "modal.csv", index=False)
-    return report.write(out, pts, cont, info, figs, find, modal, lm)
+    det = findings.details(pts, cont, out / "traces", info.get("extra", []))
+    (out / "details.json").write_text(json.dumps(det, indent=1, default=_plain) + "\n")
+    return report.write(out, pts, cont, info, figs, find, modal, lm, det)
+
+
+def _plain(x):
+    """numpy scalars for json.dumps."""
+    return x.item() if hasattr(x, "item") else str(x)
 
 
 def main(argv):

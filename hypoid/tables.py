@@ -18,7 +18,7 @@ PAPER_EHL = {"roelands_z": "simple", "shear_pressure": "mean", "Lambda_cap": 0.0
 # preset = paper selects both, but would override a study's variant of one)
 PAPER_CHOICES = {**PAPER_EHL, "tooth_data": "paper"}
 REFERENCE = {"T_bath": 313.15, "friction_model": "ehl_thermal", "mesh_model": "varying",
-             "k_f": 0.0, **PAPER_CHOICES, "e_0_scale": 1.0, "k_m_scale": 1.0}
+             "k_f": 0.0, **PAPER_CHOICES, "e_0_scale": 1.0, "k_m_scale": 1.0, "I_p": 0.014}
 
 
 def prepare(df):
@@ -74,9 +74,10 @@ def curve(df, y="eta_rms", **eq):
     return sel.groupby("speed_rpm")[y].mean().sort_index()
 
 
-def resonances(df, gear_set):
-    """{'f2': rpm, 'f3': rpm} of a gear set (from the calculated parameters in the table)."""
-    sel = df[df["gear_set"] == gear_set]
+def resonances(df, gear_set, **where):
+    """{'f2': rpm, 'f3': rpm} of a gear set (from the calculated parameters in the table) at the
+    reference inertias, or at those `where` sets (a what-if)."""
+    sel = select(df, gear_set=gear_set, **where)
     if sel.empty:
         return {}
     return {"f2": float(sel["n_f2_rpm"].iloc[0]), "f3": float(sel["n_f3_rpm"].iloc[0])}
@@ -89,12 +90,34 @@ def calibration_probes(pts):
     return sorted(v for v in pts["e_0_scale"].dropna().unique() if v != 1.0)
 
 
+WHATIF_COLUMNS = ("I_p",)  # what a what-if variant of gear set 1 may change (hypoid.study.WhatIf)
+
+
+def whatifs(df):
+    """The what-if variants in a table, as {column: value} (values off the reference)."""
+    out = []
+    for col in WHATIF_COLUMNS:
+        if col in df:
+            out += [{col: float(v)} for v in sorted(df[col].dropna().unique())
+                    if not np.isclose(v, REFERENCE[col], rtol=0, atol=1e-12)]
+    return out
+
+
 def modal_table(pts):
+    """The calculated modal parameters per gear set at the reference inertias, then gear set 1
+    of each what-if."""
     rows = []
-    for gs, g in pts.groupby("gear_set"):
+    variants = [({}, gs) for gs in sorted(pts["gear_set"].unique())] + [
+        (w, 1) for w in whatifs(pts)]
+    for where, gs in variants:
+        g = select(pts, gear_set=gs, **where)
+        if g.empty:
+            continue
         r = g.iloc[0]
-        rows.append({"gear set": int(gs), "N_p": int(r["N_p"]), "ratio": r["ratio"],
-                     "k_m0 [N/m]": r["k_m0"], "f_2 [Hz]": r["f_2"], "f_3 [Hz]": r["f_3"],
+        label = f"{int(gs)}" + "".join(f", {k} = {v:g}" for k, v in where.items())
+        rows.append({"gear set": label, "N_p": int(r["N_p"]), "ratio": r["ratio"],
+                     "k_m0 [N/m]": r["k_m0"], "R_p0 [m]": r["R_p0"], "f_2 [Hz]": r["f_2"], "f_3 [Hz]": r["f_3"],
                      "f_4 [Hz]": r["f_4"], "n(f_2) [rpm]": r["n_f2_rpm"],
-                     "n(f_3) [rpm]": r["n_f3_rpm"], "n(f_4) [rpm]": 60 * r["f_4"] / r["N_p"]})
+                     "n(f_3) [rpm]": r["n_f3_rpm"], "n(f_4) [rpm]": 60 * r["f_4"] / r["N_p"],
+                     **{f"{c} (damper)": r[c] for c in ("c_t1", "c_m", "c_t2") if c in r}})
     return pd.DataFrame(rows)

@@ -110,5 +110,6 @@ def test_default_study_verdicts(fmu_path, tmp_path):
                 "F3-f3": "not reproduced", "F4-f2-50": "reproduced",
                 "F4-f3-50": "not reproduced", "F4-f2-100": "not reproduced",
                 "F4-f3-100": "not reproduced", "F5": "reproduced", "F8": "reproduced",
-                "F6-f2": "reproduced", "F6-f3": "not reproduced"}
+                "F6-f2": "reproduced", "F6-f3": "not reproduced",
+                "F3-f3-I_p=0.001": "reproduced", "F4-f3-100-I_p=0.001": "not reproduced"}
     assert {k: got.get(k) for k in expected} == expected
