@@ -191,10 +191,12 @@ def bounds_sentence(data):
 
 
 def readme_with(text, data):
-    i, j = text.find(BEGIN), text.find(END)
-    if i < 0 or j < i:
+    from hypoid import docblocks
+
+    new = docblocks.replace(text, BEGIN, END, table(data))
+    if new is None:
         sys.exit("level_table: the README has no level-table markers")
-    return text[:i + len(BEGIN)] + "\n" + table(data) + "\n" + text[j:]
+    return new
 
 
 def main():
@@ -216,15 +218,11 @@ def main():
     data = json.loads(DATA.read_text())
     readme = pathlib.Path(args.file)
     text = readme.read_text()
-    new = readme_with(text, data)
-    if args.check:
-        if new != text:
-            print(f"{readme}: the per-level table is stale against {DATA.relative_to(ROOT)}: run "
-                  "bench/level_table.py --readme")
-            return 1
-        return 0
-    readme.write_text(new)
-    return 0
+    from hypoid import docblocks
+
+    return docblocks.write_or_check(readme, readme_with(text, data), args.check,
+                                    f"the per-level table against {DATA.relative_to(ROOT)}",
+                                    "bench/level_table.py --readme")
 
 
 if __name__ == "__main__":

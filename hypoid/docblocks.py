@@ -1,0 +1,27 @@
+"""Generated blocks of the documentation: text between a begin and an end marker that a script
+writes from a recorded data file (README's level table, docs/paper-findings.md, physics.md
+§10.8's km-effect table), and the check that fails when a page is stale."""
+
+import pathlib
+
+
+def replace(text, begin, end, body):
+    """`text` with the lines between the markers `begin` and `end` replaced by `body`; None
+    when the markers are missing or out of order."""
+    i, j = text.find(begin), text.find(end)
+    if i < 0 or j < i:
+        return None
+    return text[:i + len(begin)] + "\n" + body + "\n" + text[j:]
+
+
+def write_or_check(path, new, check, what, fix):
+    """Writes `new` into `path`, or with `check` compares only: 1 (and a line naming `what`
+    and the command `fix` that regenerates it) when the file differs, else 0."""
+    path = pathlib.Path(path)
+    if not check:
+        path.write_text(new)
+        return 0
+    if path.read_text() != new:
+        print(f"{path}: {what} is stale: run {fix}")
+        return 1
+    return 0
