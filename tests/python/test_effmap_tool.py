@@ -30,7 +30,7 @@ def own_map(fmu_path, tmp_path_factory):
     """A small map of a gear-set file of one's own (a copy of set 2) with lubricant 2."""
     d = tmp_path_factory.mktemp("effmap")
     gear = d / "my_set.txt"
-    shutil.copy(ROOT / "resources" / "gearsets" / "gearset2.txt", gear)
+    shutil.copy(ROOT / "resources" / effmap.builtin_gear_set({"gear_set": 2}), gear)
     out = d / "my_map.txt"
     assert cli.main(["effmap", "--fmu", str(fmu_path), "--out", str(out), "--gear-set-file",
                      str(gear), "--lubricant", "2", "--set", "k_f=0.15", "--workers", "0",
