@@ -19,6 +19,11 @@ Examples:
   hypoid drive-cycle --cycle nedc --no-warm
   hypoid drive-cycle --cycle my_route.csv --t-amb 5 --set gear_set=2
   hypoid drive-cycle --level full                 the paper's full model (slow: minutes)
+  hypoid drive-cycle --set friction_preset=paper  friction data: runs the fast level (says so)
+
+A --set parameter that the default level does not reach (friction data: not in the built-in
+maps; the compliant mesh's: not in the rigid one) moves it to the cheapest level that it
+reaches, and one line says so; with --level given, such a parameter is refused (exit 2).
 
 Writes <out>/<name>/: summary.json, summary.md, cold.csv (and warm.csv), drive_cycle.png; the
 folder appears only when the run is complete."""
@@ -59,13 +64,106 @@ LEVELS = {
 # map holds its 20 degC edge, so a cycle that starts or can cool below it runs the fast level.
 MAP_T_MIN = min(TEMPERATURES_C) + ZERO_C
 
+# What a --set parameter reaches at each level (docs/axle.md, "Which level a --set reaches"):
+# the map level takes the mesh friction from a map made with the default friction and gear data
+# (only the gear set and lubricant have a built-in map each), and the rigid mesh of the map and
+# fast levels has no stiffness, transmission error or backlash. Every parameter of the gear FMU
+# is in one of the three groups or is named in reaching_levels (a test checks it), so that a new
+# one is placed deliberately.
+REACHES_EVERY_LEVEL = frozenset({
+    "gear_set", "lubricant", "load_mode", "solver", "rtol", "atol",
+    "max_step", "steps_per_mesh_cycle", "I_s", "I_p", "I_g", "I_w", "k_t1", "k_t2", "zeta_2",
+    "zeta_3", "zeta_4", "w_p0", "governor_bandwidth", "n_avg_cycles", "axle_losses",
+    "thermal_model", "ring_d", "ring_b", "r_m_p", "r_m_g", "delta_p", "delta_g", "beta_p",
+    "beta_g", "alpha_n", "oil_level", "V_oil", "brg_ph_dm", "brg_ph_Y", "brg_ph_x", "brg_pt_dm",
+    "brg_pt_Y", "brg_pt_x", "brg_gn_dm", "brg_gn_Y", "brg_gn_x", "brg_gf_dm", "brg_gf_Y",
+    "brg_gf_x", "brg_f0", "brg_f1", "F_pre_p", "F_pre_g", "d_seal_p", "d_seal_w", "T_oil0",
+    "C_sump", "A_housing", "L_housing", "eps_housing", "h_housing"})
+MESH_FRICTION = frozenset({    # the friction model and its data: not in the built-in maps
+    "gear_set_file", "lubricant_file", "mu_const", "E", "nu", "k_s", "rho_s", "c_s", "tau_0",
+    "varsigma_a", "sigma_s", "eta_beta_sigma", "sigma_over_beta", "T_inlet_rise", "Lambda_cap",
+    "k_f", "hertz_model", "roelands_z", "shear_pressure", "relaxation", "friction_preset",
+    "friction_table", "tooth_data", "preset"})
+MESH_DYNAMICS = frozenset({    # the compliant mesh only: the full level
+    "b", "backlash_model", "backlash_smoothing", "k_m_scale", "e_0_scale"})
+
+
+def reaching_levels(name, value, extra):
+    """The levels at which `--set name=value` reaches the result. A parameter at its default
+    reaches them all; with efficiency_map_file the map is the user's own, made (hypoid effmap
+    --set ...) with the friction they set."""
+    if name == "efficiency_map_file":
+        return {"map"}
+    if name == "friction_model":  # the levels' own settings, which --set overrides
+        return {"map"} if value == "map" else {"fast", "full"}
+    if name == "mesh_model":
+        return {"map", "fast"} if value == "rigid" else {"full"}
+    if value == TABLE.start(name):  # the default: the levels are made with it
+        return set(LEVELS)
+    if name in MESH_DYNAMICS:
+        return {"full"}
+    if name in MESH_FRICTION and "efficiency_map_file" not in extra:
+        return {"fast", "full"}
+    return set(LEVELS)
+
+
+def unreached(level, extra):
+    """The --set names that do not reach the result at `level`."""
+    return [n for n, v in extra.items() if level not in reaching_levels(n, v, extra)]
+
 
 def default_level(T_amb, starts, extra):
     """The drive cycle's level when none is asked for (docs/work-precision.md): map while the oil
     starts and the air stays in the map's range and a built-in map exists (none for a gear-set
-    or lubricant file of one's own, nor for the tooth data the maps were not made with), else
-    fast."""
-    return "map" if min(T_amb, *starts) >= MAP_T_MIN and builtin_map_fits(extra) else "fast"
+    or lubricant file of one's own, nor for the tooth data the maps were not made with), or when a
+    map of one's own is given; else fast; and the cheapest level that every --set parameter
+    reaches (fast for friction data, full for the compliant mesh's)."""
+    in_range = min(T_amb, *starts) >= MAP_T_MIN and builtin_map_fits(extra)
+    first = "map" if in_range or "efficiency_map_file" in extra else "fast"
+    order = ["map", "fast", "full"]
+    return next(lv for lv in order[order.index(first):] if not unreached(lv, extra))
+
+
+def _why(level, name, value):
+    """Why `--set name=value` does not reach the result at `level`, in a few words."""
+    if name in MESH_FRICTION:
+        return (f"the {level} level takes the mesh friction from the built-in efficiency map, "
+                "made with the default friction and gear data")
+    if name in MESH_DYNAMICS:
+        return f"the {level} level's rigid mesh has no stiffness, transmission error or backlash"
+    if name == "efficiency_map_file":
+        return "only the map level reads a map"
+    return f"{name} = {value} is not the {level} level's {LEVELS[level][name]}"
+
+
+def check_level(level, extra):
+    """A UsageError when a --set parameter does not reach the result at the level asked for."""
+    missed = unreached(level, extra)
+    if not missed:
+        return
+    name, value = missed[0], extra[missed[0]]
+    reach = sorted(reaching_levels(name, value, extra), key=list(LEVELS).index)
+    own_map = " (or give efficiency_map_file=, a map made with hypoid effmap --set ...)" \
+        if level == "map" and name in MESH_FRICTION else ""
+    raise cliargs.UsageError(f"--set {', '.join(missed)} with --level {level}: "
+                             f"{_why(level, name, value)}{own_map}; it reaches the result at "
+                             f"--level {' or '.join(reach)}")
+
+
+def choose_level(asked, T_amb, starts, extra):
+    """(level, note): the level asked for (checked), or the default with a one-line note when a
+    --set parameter moved it off the level the temperatures and data files give."""
+    if asked:
+        check_level(asked, extra)
+        return asked, None
+    files = {k: v for k, v in extra.items()
+             if k in ("gear_set_file", "lubricant_file", "efficiency_map_file")}
+    base, level = default_level(T_amb, starts, files), default_level(T_amb, starts, extra)
+    if level == base:
+        return level, None
+    missed = unreached(base, extra)
+    return level, (f"--set {', '.join(missed)} does not reach the result at the {base} level "
+                   f"({_why(base, missed[0], extra[missed[0]])}): running the {level} level")
 
 
 GEAR_OUT = ["w_w", "w_p", "T_oil", "P_loss", "P_loss_viscous", "P_churn", "P_bearings",
@@ -191,6 +289,7 @@ class Vehicle:
     rho_air: float = 1.2     # kg/m^3
     k_hs: float = 1.2e4      # N m/rad, both half-shafts and tyres
     v_eps: float = 0.5       # m/s
+    v_rest: float = 1e-6     # m/s: below it the car stands (3.6 mm an hour; docs/axle.md)
     air_factor: float = 0.5  # air speed over the housing / vehicle speed (assumed)
 
     def fmu_values(self):
@@ -255,9 +354,12 @@ def gear_start(level, vehicle, I_w0, T_oil0, T_amb, extra):
 
 class FmpyMaster:
     """The gear and the vehicle in fmpy (hypoid.instance), Jacobi: both step over [t, t + h]
-    with the inputs of t (T_w = the vehicle's T_hs, w_w = the gear's w_w, both of t)."""
+    with the inputs of t (T_w = the vehicle's T_hs, w_w = the gear's w_w, both of t). A wheel
+    speed below w_rest reaches the vehicle as 0: the car stands, and its brakes and rolling
+    resistance hold it with a constant torque instead of one the gear's integrator noise makes
+    (each change of T_w restarts the gear FMU's integrator: docs/axle.md)."""
 
-    def __init__(self, gear_fmu, vehicle_fmu, gear_values, vehicle_values, h):
+    def __init__(self, gear_fmu, vehicle_fmu, gear_values, vehicle_values, h, w_rest=0.0):
         self.gear, self.car = Instance(gear_fmu, name="gear"), Instance(vehicle_fmu,
                                                                          name="vehicle")
         self.gear.start(gear_values)
@@ -266,7 +368,7 @@ class FmpyMaster:
         self.v_refs = [self.car.ref(x) for x in VEHICLE_OUT]
         self.g_in = [self.gear.ref(x) for x in ("T_s", "T_w", "v_air")]
         self.v_in = [self.car.ref(x) for x in ("w_w", "T_brake")]
-        self.h, self.k = h, 0
+        self.h, self.k, self.w_rest = h, 0, w_rest
         self.outputs = self._read()
 
     def _read(self):
@@ -276,7 +378,8 @@ class FmpyMaster:
     def step(self, T_s, T_brake, v_air):
         gv, vv = self.outputs
         self.gear._call(self.gear.slave.setReal, self.g_in, [T_s, vv[I_THS], v_air])
-        self.car._call(self.car.slave.setReal, self.v_in, [gv[I_WW], T_brake])
+        w_w = gv[I_WW] if abs(gv[I_WW]) >= self.w_rest else 0.0
+        self.car._call(self.car.slave.setReal, self.v_in, [w_w, T_brake])
         t = self.k * self.h
         self.gear.do_step(t, self.h)
         self.car.do_step(t, self.h)
@@ -340,7 +443,8 @@ def simulate(cycle, gear_fmu, vehicle_fmu, level, T_oil0, T_amb, h, extra, label
     wall = time.perf_counter()
     I_w0 = float(TABLE.variable("I_w").start)
     g_values = gear_start(level, vehicle, I_w0, T_oil0, T_amb, extra)
-    m = FmpyMaster(gear_fmu, vehicle_fmu, g_values, vehicle.fmu_values(), h)
+    m = FmpyMaster(gear_fmu, vehicle_fmu, g_values, vehicle.fmu_values(), h,
+                   vehicle.v_rest / vehicle.r_dyn)
     driver, (gv, vv) = _driver(m.gear, vehicle), m.outputs
     if master != "fmpy":
         m.close()
@@ -571,12 +675,14 @@ def main(argv):
     starts = [("cold", (args.t_oil0 if args.t_oil0 is not None else args.t_amb) + ZERO_C)]
     if not args.no_warm:
         starts.append(("warm", args.warm + ZERO_C))
-    level = args.level or default_level(T_amb, [T0 for _, T0 in starts], extra)
+    level, note = choose_level(args.level, T_amb, [T0 for _, T0 in starts], extra)
+    if note:
+        print(f"hypoid drive-cycle: {note}", flush=True)
     runs = [simulate(cycle, gear_fmu, vehicle_fmu, level, T0, T_amb, args.step, extra,
                      label, master=args.master, until=args.until) for label, T0 in starts]
     summaries = [summarise(run, cycle, args.step) for run in runs]
     diff = difference(summaries[0], summaries[1]) if len(summaries) == 2 else None
-    meta = {"cycle": cycle.name, "source": cycle.source, "level": level,
+    meta = {"cycle": cycle.name, "source": cycle.source, "level": level, "level_note": note,
             "gear_fmu_settings": LEVELS[level], "step_s": args.step,
             "master": args.master, "until_s": args.until,
             "T_amb_degC": args.t_amb, "set": extra, "vehicle": asdict(Vehicle())}

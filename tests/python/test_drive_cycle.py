@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from hypoid import cli, drivecycle
-from hypoid.instance import Instance
+from hypoid.instance import TABLE, Instance
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 VEHICLE_FMU = ROOT / "build" / "LongitudinalVehicle.fmu"
@@ -115,6 +115,19 @@ def test_short_cycle_heat_and_energy_balances_close(short_cycle):
     for run in s["runs"]:
         assert abs(run["audit"]["heat_residual_relative"]) < 1e-9
         assert abs(run["audit"]["energy_residual_relative"]) < 5e-3
+
+
+def test_a_standing_car_sends_the_gear_a_constant_torque(short_cycle):
+    """Braked to a stop at 30 s, the car stands: from 35 s the wheel speed the vehicle receives
+    is 0 and its torque on the gear (T_hs, the gear's T_w) exactly 0, not the gear integrator's
+    noise through tanh(v/v_eps), each of whose changes restarted the gear FMU's integrator;
+    while it moves the vehicle sees the gear's wheel speed as it is (one step later: Jacobi)."""
+    _, _, r = short_cycle
+    standing = r["time"] >= 35.0
+    assert np.all(r["T_hs"][standing] == 0.0) and np.all(r["v"][standing] == 0.0)
+    assert np.all(r["T_brake"][standing] > 0.0)
+    moving = ((r["time"] > 3.0) & (r["time"] < 29.0))[1:]
+    assert np.allclose(r["v"][1:][moving], 0.3 * r["w_w"][:-1][moving], rtol=1e-8, atol=0.0)
 
 
 def test_wltc_launch_energy_audit_closes_to_1e_6():
@@ -275,6 +288,77 @@ def test_the_default_level_is_the_map_level_within_the_maps_range():
     assert drivecycle.default_level(293.15, [283.15, 353.15], {}) == "fast"
     assert drivecycle.default_level(293.15, [293.15], {"gear_set_file": "my_set.txt"}) == "fast"
     assert drivecycle.default_level(293.15, [293.15], {"lubricant_file": "my_oil.txt"}) == "fast"
+
+
+def test_every_parameter_has_a_rule_for_the_levels_it_reaches():
+    """Each parameter of the gear FMU is placed: it reaches every level, or it is friction data
+    (not in the built-in maps: fast and full), or it belongs to the compliant mesh (full), or it
+    is one of the levels' own settings; the groups do not overlap and name real parameters."""
+    groups = [drivecycle.REACHES_EVERY_LEVEL, drivecycle.MESH_FRICTION, drivecycle.MESH_DYNAMICS,
+              {"efficiency_map_file", "friction_model", "mesh_model"}]
+    names = {v.name for v in TABLE.variables.values() if v.causality == "parameter"}
+    assert sum(len(g) for g in groups) == len(set().union(*groups))
+    assert set().union(*groups) == names
+
+
+def test_a_set_parameter_moves_the_default_level_to_one_it_reaches():
+    """--set of friction data moves the default from the map level (whose map was made with the
+    default friction) to the fast level, of the compliant mesh's data to the full level, with
+    one line that says so; the axle ledger's parameters keep the map level; a map of one's own
+    keeps it for friction data too."""
+    hot = (293.15, [293.15, 353.15])
+    assert drivecycle.choose_level(None, *hot, {"brg_f0": 4.0, "F_pre_g": 9e3}) == ("map", None)
+    assert drivecycle.choose_level(None, *hot, {"tau_0": 2e6}) == ("map", None)  # the default
+    level, note = drivecycle.choose_level(None, *hot, {"tau_0": 3e6})
+    assert level == "fast" and "tau_0" in note and "map level" in note and "\n" not in note
+    assert drivecycle.choose_level(None, *hot, {"k_m_scale": 1.1})[0] == "full"
+    assert drivecycle.choose_level(None, *hot, {"friction_model": "coulomb"})[0] == "fast"
+    assert drivecycle.choose_level(None, *hot, {"mesh_model": "varying"})[0] == "full"
+    own = {"tau_0": 3e6, "efficiency_map_file": "my_map.txt"}
+    assert drivecycle.choose_level(None, *hot, own) == ("map", None)
+    # below the maps' range the default is fast already: no note
+    assert drivecycle.choose_level(None, 278.15, [278.15], {"tau_0": 3e6}) == ("fast", None)
+
+
+@pytest.mark.parametrize("level, name, value, words", [
+    ("map", "k_f", "0.15", ["--set k_f with --level map", "fast or full", "efficiency_map_file"]),
+    ("fast", "b", "1e-4", ["--set b with --level fast", "rigid mesh", "--level full"]),
+    ("fast", "efficiency_map_file", "my_map.txt", ["only the map level", "--level map"]),
+])
+def test_a_level_that_a_set_parameter_does_not_reach_is_refused(tmp_path, capsys, level, name,
+                                                               value, words):
+    """Asked for a level that a --set parameter does not reach: one line, exit 2, nothing run
+    or written."""
+    out = tmp_path / "out"
+    code, _, err = run_cli(["--level", level, "--set", f"{name}={value}", "--out", str(out),
+                            "--no-warm"], capsys)
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "Traceback" not in err
+    for w in words:
+        assert w in err
+    assert not out.exists()
+
+
+def test_friction_data_set_at_the_default_level_reaches_the_mesh_loss(tmp_path, capsys):
+    """`hypoid drive-cycle --set friction_preset=paper` (the paper's EHL choices, about half the
+    defaults' flank friction: docs/friction-evidence.md) says in one line that it runs the fast
+    level, and its mesh loss over a short launch is the fast level's with that preset, well
+    below the fast level's with the defaults, while bearings and seals stay as they were."""
+    f = tmp_path / "launch.csv"
+    f.write_text("time,speed\n0,0\n1,0\n5,25\n6,25\n")
+    runs = {}
+    for name, argv in (("paper", ["--set", "friction_preset=paper"]),
+                       ("defaults", ["--level", "fast"])):
+        code, out, _ = run_cli(["--cycle", str(f), "--out", str(tmp_path), "--name", name,
+                                "--no-warm"] + argv, capsys)
+        assert code == 0
+        runs[name] = json.loads((tmp_path / name / "summary.json").read_text())
+        runs[name + "_out"] = out
+    assert runs["paper"]["meta"]["level"] == "fast"
+    assert "--set friction_preset does not reach the result at the map level" in \
+        runs["paper_out"].splitlines()[0]
+    paper, default = (runs[k]["runs"][0]["axle_losses_J"] for k in ("paper", "defaults"))
+    assert paper["mesh"] < 0.8 * default["mesh"]
+    assert paper["bearings"] == pytest.approx(default["bearings"], rel=0.01)
 
 
 def test_the_default_level_gives_the_full_levels_axle_loss():

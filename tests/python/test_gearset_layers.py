@@ -268,8 +268,10 @@ def test_the_built_in_maps_refuse_the_other_tooth_data(fmu_path):
         gear.close()
     assert drivecycle.default_level(293.15, [293.15], {}) == "map"
     assert drivecycle.default_level(293.15, [293.15], {"tooth_data": other}) == "fast"
-    paper_level = drivecycle.default_level(293.15, [293.15], {"preset": "paper"})
-    assert paper_level == ("fast" if other == "paper" else "map")
+    # preset = paper also sets the paper's friction, which the maps (made with the default
+    # friction) do not hold: the fast level whichever the tooth data (docs/axle.md, "Which level
+    # a --set reaches")
+    assert drivecycle.default_level(293.15, [293.15], {"preset": "paper"}) == "fast"
     files = effmap.source_files(fmu_path, {"gear_set": 2, "tooth_data": "paper"})
     assert files["gear_set"].as_posix().endswith("resources/gearsets/gearset2.txt")
     files = effmap.source_files(fmu_path, {"gear_set": 2, "tooth_data": "loaded"})
