@@ -224,9 +224,9 @@ def _lossmap_comparison(lm):
           "oil temperature and bearing preload.",
           f"- Reading: {_reading(loaded, hi_pub)} JTEKT (FISITA 2006, F2006P299) attribute "
           "about half of a rear axle's loss to the pinion bearings; the pinion and carrier "
-          "preloads here are calibrated to workshop turning-torque specifications, f_0 and the "
-          "churning coefficients are not verified (docs/axle.md, 'How the figures compare' and "
-          "'Constants against published sources')."]
+          "preloads here are calibrated to workshop turning-torque specifications, f_0 and f_1 "
+          "are Schaeffler's catalogue values, the churning coefficients are not verified "
+          "(docs/axle.md, 'How the figures compare' and 'Constants against published sources')."]
     return L
 
 
