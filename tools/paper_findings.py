@@ -55,6 +55,12 @@ def _git(*args):
         return ""
 
 
+def _commit():
+    """The checkout's commit, '+ changes' when the model's sources differ from it."""
+    dirty = bool(_git("status", "--porcelain", "--", "fmu-src", "hypoid", "resources"))
+    return _git("rev-parse", "--short", "HEAD") + (" + changes" if dirty else "")
+
+
 def record(study):
     """The data file from a study directory (study.json, findings.csv, modal.csv,
     details.json of hypoid study)."""
@@ -64,12 +70,10 @@ def record(study):
     find = pd.read_csv(study / "findings.csv").fillna("")
     modal = pd.read_csv(study / "modal.csv")
     det = json.loads((study / "details.json").read_text())
-    dirty = bool(_git("status", "--porcelain", "--", "fmu-src", "hypoid", "resources"))
     return _finite({
         "study": {k: info.get(k) for k in ("study", "fmu_sha256", "finished", "wall_s",
                                            "cpu_s_total", "n_points", "n_sweep_rows")},
-        "commit": _git("rev-parse", "--short", "HEAD") + (" + changes" if dirty else ""),
-        "recorded": datetime.date.today().isoformat(),
+        "commit": _commit(), "recorded": datetime.date.today().isoformat(),
         "findings": find[["id", "figure", "at", "paper", "this FMU", "verdict"]]
         .to_dict("records"),
         "modal": modal.to_dict("records"),
@@ -94,6 +98,11 @@ def _um(values):
 def provenance(data):
     lines = []
     for name, d in data.items():
+        if name == "loaded":
+            lines.append(f"- the loaded tooth data's sweep recorded {d['recorded']} on code "
+                         f"{d['commit']} (FMU sha256 {d['fmu_sha256'][:12]}): {d['rows']} "
+                         "points.")
+            continue
         s = d["study"]
         lines.append(f"- `hypoid study {s['study']}` finished {s['finished']} on code "
                      f"{d['commit']} (FMU sha256 {s['fmu_sha256'][:12]}): {s['n_points']} steady "
@@ -224,6 +233,7 @@ def sensitivity_block(d):
 
 LOADED_FILE = ROOT / "resources" / "gearsets" / "loaded" / "gearset1.txt"
 LOADED_TORQUES = (50.0, 100.0, 300.0)
+NEAR_RPM = 150.0  # a DTE peak belongs to a mode within this distance of its modal speed
 LOADED_SWEEP = ("hypoid sweep --out DIR --set tooth_data=loaded roelands_z=simple "
                 "shear_pressure=mean Lambda_cap=0 relaxation=constant --vary T_s=50,100,300 "
                 "--vary speed_rpm=1000:3600:100")  # the study's paper choices, loaded tooth data
@@ -244,9 +254,10 @@ def loaded_modes(path=LOADED_FILE, torques=LOADED_TORQUES):
     out = {}
     for t in torques:
         s = modes.system(k_m=float(np.interp(t, levels, k_m)), R_p=float(np.interp(t, levels, R_p)))
-        w, _ = modes.modes(s)
+        w, phi = modes.modes(s)
+        share = modes.mesh_strain_share(s, w, phi)
         out[f"{t:g}"] = {"k_m": s.k_m, "R_p": s.R_p, "f2": modes.rpm(s, w[1]),
-                         "f3": modes.rpm(s, w[2])}
+                         "f3": modes.rpm(s, w[2]), "mesh_share": [share[0], share[1]]}
     return out
 
 
@@ -260,37 +271,57 @@ def record_loaded(sweep):
 
     pts = tables.prepare(pd.read_csv(sweep / "points.csv"))
     pred = loaded_modes()
-    out = {"modal": pred, "sweep": {}, "command": LOADED_SWEEP}
+    out = {"modal": pred, "sweep": {}, "command": LOADED_SWEEP, "rows": len(pts),
+           "fmu_sha256": str(pts["fmu_sha256"].iloc[0]) if "fmu_sha256" in pts else "",
+           "commit": _commit(), "recorded": datetime.date.today().isoformat()}
     for t, g in pts.groupby("T_s"):
         by = g.groupby("speed_rpm").mean(numeric_only=True).sort_index()
-        dte = by["DTE_pp_um"]
-        peaks = [n for i, n in enumerate(dte.index)
-                 if 0 < i < len(dte) - 1 and dte.iloc[i] > dte.iloc[i - 1]
-                 and dte.iloc[i] >= dte.iloc[i + 1]]
         m = pred.get(f"{t:g}")
-        dips = {mode: fd.dip(by["eta_rms"], m[mode]) for mode in ("f2", "f3")} if m else {}
+        near = {}
+        for mode in ("f2", "f3"):
+            band = by[(by.index - m[mode]).__abs__() <= NEAR_RPM]["DTE_pp_um"] if m else []
+            if len(band):
+                near[mode] = {"rpm": float(band.idxmax()), "DTE_pp_um": float(band.max()),
+                              "dip": fd.dip(by["eta_rms"], m[mode])}
         out["sweep"][f"{t:g}"] = {
-            "peaks": [{"rpm": float(n), "DTE_pp_um": float(dte[n])} for n in peaks],
+            "near": near, "fmu_f3_rpm": float(by["n_f3_rpm"].iloc[0]),
             "separation_rpm": [float(n) for n in by.index[by["contact_loss_fraction"] > 0]],
-            "dips": dips, "speeds": f"{by.index.min():g}-{by.index.max():g}"}
+            "max_DTE_pp_um": float(by["DTE_pp_um"].max()),
+            "speeds": f"{by.index.min():g}-{by.index.max():g}"}
     return _finite(out)
 
 
 def loaded_block(d):
     """Where gear set 1's resonances sit with the loaded tooth data."""
-    rows = ["| T_s [N·m] | mean k_m [10⁸ N/m] | mode 2 / mode 3, modal [rpm] | DTE peaks in the "
-            "sweep [rpm: µm p-p] | efficiency dip at mode 2 / 3 [%-points] | teeth apart at |",
-            "|---|---|---|---|---|---|"]
+    rows = ["| T_s [N·m] | mean k_m [10⁸ N/m] | mode 2 / mode 3, modal [rpm] | their mesh share of "
+            "strain energy | largest DTE p-p "
+            f"within {NEAR_RPM:g} rpm of mode 2 / mode 3 [rpm: µm] | efficiency dip there "
+            "[%-points] | teeth apart at |", "|---|---|---|---|---|---|---|"]
     for t, m in d["modal"].items():
         s = d["sweep"].get(t, {})
-        peaks = ", ".join(f"{p['rpm']:g}: {p['DTE_pp_um']:.0f}" for p in s.get("peaks", [])) \
-            or "–"
-        dips = " / ".join("–" if s.get("dips", {}).get(k) is None else
-                          f"{100 * s['dips'][k]:.3f}" for k in ("f2", "f3"))
+        near = s.get("near", {})
+        peaks = " / ".join(f"{near[k]['rpm']:g}: {near[k]['DTE_pp_um']:.0f}" if k in near
+                           else "–" for k in ("f2", "f3"))
+        dips = " / ".join("–" if near.get(k, {}).get("dip") is None else
+                          f"{100 * near[k]['dip']:.3f}" for k in ("f2", "f3"))
         sep = fd.speed_range(s["separation_rpm"]) if s.get("separation_rpm") else "none"
-        rows.append(f"| {t} | {m['k_m'] / 1e8:.2f} | {m['f2']:.0f} / {m['f3']:.0f} | {peaks} | "
-                    f"{dips} | {sep} |")
-    return "\n".join(rows + ["", f"Sweep: `{d['command']}`." if d["command"] else ""]).strip()
+        rows.append(f"| {t} | {m['k_m'] / 1e8:.2f} | {m['f2']:.0f} / {m['f3']:.0f} | "
+                    f"{m['mesh_share'][0]:.2f} / {m['mesh_share'][1]:.2f} | {peaks} | {dips} | "
+                    f"{sep} |")
+    ts = list(d["modal"])
+    sep = [t for t in ts if d["sweep"].get(t, {}).get("separation_rpm")]
+    dips = [100 * v["dip"] for s in d["sweep"].values() for v in s.get("near", {}).values()
+            if v.get("dip") is not None]
+    summary = (f"Mode 3 moves from {d['modal'][ts[0]]['f3']:.0f} rpm at {ts[0]} N·m to "
+               f"{d['modal'][ts[-1]]['f3']:.0f} rpm at {ts[-1]} N·m, mode 2 from "
+               f"{d['modal'][ts[0]]['f2']:.0f} to {d['modal'][ts[-1]]['f2']:.0f} rpm; the "
+               "largest DTE peak-to-peak of the sweep is "
+               f"{max(s['max_DTE_pp_um'] for s in d['sweep'].values()):.0f} µm; the teeth "
+               + (f"separate at {', '.join(sep)} N·m" if sep else "separate at no point")
+               + f"; the deepest dip at a resonance is {max(dips):.3f} %-points"
+               + (" (below the findings' 0.02 threshold)." if max(dips) < 100 * fd.DIP_MIN
+                  else "."))
+    return "\n".join(rows + ["", summary, "", f"Sweep: `{d['command']}`."])
 
 
 def _study(name, fn):
