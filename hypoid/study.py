@@ -47,9 +47,9 @@ class WhatIf:
 # dips, the sweeps cross mode 3 (the paper's jump at 100 N.m, the separation at 50 N.m)
 WHATIF_IP = WhatIf("I_p from the pinion's geometry", {"I_p": I_P_GEOMETRY},
                    torques=[50, 100, 200, 300],
-                   speeds=[1000, 1200, 1400, 1600, 1800, 1900, 2000, 2050, 2100, 2150, 2200, 2300,
-                           2400, 3000, 5000],
-                   sweep_torques=[50, 100], sweep_speeds=_rng(2000, 2300, 50),
+                   speeds=[1200, 1400, 1600, 1800, 1900, 2000, 2050, 2100, 2150, 2200, 2400, 3000,
+                           5000],
+                   sweep_torques=[50, 100], sweep_speeds=_rng(2000, 2250, 50),
                    trace_points=[(50, 2100), (50, 5000), (100, 2100), (100, 5000)])
 
 
