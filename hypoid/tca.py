@@ -107,9 +107,10 @@ def loaded_surrogate(set_no, torques=tl.TORQUES, harmonics=CONTACT_HARMONICS,
     as many harmonics as the contact series by default."""
     if not 1 <= len(torques) <= MAX_LEVELS or any(b <= a for a, b in zip(torques, torques[1:])):
         raise ValueError(f"--torques: 1 to {MAX_LEVELS} increasing values, not {list(torques)}")
-    blank, layers, notes = sur.TABLE_1[set_no], {}, {}
+    blank, layers, notes, reliefs = sur.TABLE_1[set_no], {}, {}, []
     for flank in tl.FLANKS:
         model = tl.LoadedFlank(tl.flank_set(blank, flank))
+        reliefs.append(f"{model.C_a * 1e6:.2f}")
         for level, torque in enumerate(torques, 1):
             samples, e_u = loaded_samples(model, torque)
             layers[(flank, level)] = fit_gearset(samples, harmonics, contact_harmonics)
@@ -121,15 +122,18 @@ def loaded_surrogate(set_no, torques=tl.TORQUES, harmonics=CONTACT_HARMONICS,
             if flank == "drive" and level == 1:
                 e_0 = fit(e_u, harmonics)
     gs = sur.GearSet(blank)
+    relief_amounts = "/".join(reliefs)
+    relief_lengths = f"{model.xi_relief * (gs.s_roll[1] - gs.s_roll[0]) * 1e3:.2f}"
     name = (f"Paouris et al. 2016 gear set {set_no} ({blank.N_p}/{blank.N_g}), loaded surrogate "
             "TCA, drive and coast")
     comments = _surrogate_comments(set_no, gs, harmonics, contact_harmonics)[:2] + [
         "regenerate with `hypoid tca surrogate --all --loaded --out-dir resources/gearsets/loaded`,"
         " do not edit.", "Units SI (m, N/m, rad); series format in docs/data-files.md.",
-        "", "Loaded tooth contact (§10.8): secant k_m, load shares and R_p per pinion torque level;",
-        "both flanks (coast: alpha_nC = alpha_e - alpha_lim); e_0 the unloaded transmission error;",
-        f"  profile ease-off {tl.DELTA_PROFILE * 1e6:g} um, lengthwise ease-off "
-        f"{sur.DELTA_END * 1e6:g} um; written by `hypoid tca surrogate --loaded`."]
+        "", "Loaded tooth contact (§10.8): secant k_m, load shares and R_p per pinion torque level, both",
+        "  flanks (coast: alpha_nC = alpha_e - alpha_lim); e_0 the unloaded transmission error; lengthwise "
+        f"ease-off {sur.DELTA_END * 1e6:g} um;",
+        f"  parabolic tip/root relief over {relief_lengths} mm of roll, C_a {relief_amounts} um "
+        f"(drive/coast) = the deflection at {tl.DESIGN_TORQUE:g} N m."]
     return Gearset(name, blank.N_p, blank.N_g, {"e_0": e_0}, comments, notes,
                    torque_levels=tuple(float(t) for t in torques), flanks=tl.FLANKS,
                    layers=layers)

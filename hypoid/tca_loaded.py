@@ -8,14 +8,16 @@ the Hertzian approach of a line contact of the slice's length. The pairs share t
 by displacement compatibility: every loaded slice closes the common mesh approach δ less its own
 unloaded separation, the profile ease-off of its pair plus the lengthwise ease-off along the
 contact line. So the contact grows with load along the line (the elliptic footprint) and in
-number of pairs (the loaded contact ratio).
+number of pairs (the loaded contact ratio). The profile ease-off is a tip and root relief sized
+to the deflection at a design torque, so that up to that torque a pair enters and leaves the
+path unloaded.
 
 Lengths in m, forces in N, stiffness in N/m, angles in rad unless a name says otherwise.
 """
 
 import math
 from dataclasses import dataclass
-from functools import cached_property
+from functools import cached_property, lru_cache
 
 import numpy as np
 
@@ -27,7 +29,10 @@ E_PLANE = E_STEEL / (1.0 - NU_STEEL ** 2)  # plane-strain modulus, = the paper's
 G_STEEL = E_STEEL / (2.0 * (1.0 + NU_STEEL))  # shear modulus [Pa]
 SHEAR_FORM = 1.2  # shear form factor of a rectangular section
 CLEARANCE = 0.25  # root clearance / m_mn (ASSUMED)
-DELTA_PROFILE = 20e-6  # profile ease-off δ_prof half a path away from the pitch point [m] (ASSUMED)
+DESIGN_TORQUE = 400.0  # pinion torque the tip and root relief is sized for [N·m] (top of TORQUES)
+UNMODIFIED = 1.0  # length of the unmodified (conjugate) middle of the path [mesh periods]
+RELIEF_EXPONENT = 2.0  # shape of the relief: C_a (t/ξ_r)^p, 2 = parabolic
+SIZING_ANGLES = 128  # mesh angles of the relief sizing (relief_amount)
 N_SLICES = 41  # slices along a contact line
 N_QUAD = 48  # Gauss points along a tooth
 TORQUES = (25.0, 50.0, 100.0, 200.0, 400.0)  # pinion torque levels [N·m]
@@ -123,10 +128,22 @@ class Tooth:
 @dataclass(frozen=True)
 class LoadedFlank:
     """The loaded-contact model of one flank of a gear set; the pairs' functions take the
-    engagement coordinate ξ of docs/physics.md §10.5."""
+    engagement coordinate ξ of docs/physics.md §10.5. relief: the tip and root relief C_a at the
+    path ends [m]; None sizes it to the deflection at DESIGN_TORQUE (relief_amount)."""
 
     gs: sur.GearSet
-    delta_prof: float = DELTA_PROFILE
+    relief: float | None = None
+
+    @cached_property
+    def C_a(self):
+        """Tip and root relief at the path ends [m]."""
+        return relief_amount(self.gs) if self.relief is None else self.relief
+
+    @cached_property
+    def xi_relief(self):
+        """Start of the relief [engagement coordinate] at each end: the unmodified middle
+        [ξ_r, 1 − ξ_r] is UNMODIFIED mesh periods long."""
+        return 0.5 * (1.0 - UNMODIFIED / self.gs.eps_TCA)
 
     @cached_property
     def teeth(self):
@@ -181,8 +198,20 @@ class LoadedFlank:
         return A, B
 
     def profile_gap(self, xi):
-        """Unloaded separation of a pair from the profile ease-off [m]: δ_prof ((ξ − ξ_p)/½)²."""
-        return self.delta_prof * (2.0 * (np.asarray(xi, dtype=float) - self.xi_pitch)) ** 2
+        """Unloaded separation of a pair from the profile ease-off [m]: zero on the unmodified
+        middle of the path, a parabolic relief C_a (t/ξ_r)² tangent to it over the last ξ_r of
+        either end (t the distance into the relief: the gear's tip and the pinion's root at the
+        approach end, the pinion's tip and the gear's root at the recess end)."""
+        xi, r = np.asarray(xi, dtype=float), self.xi_relief
+        into = np.maximum(np.maximum(r - xi, xi - (1.0 - r)), 0.0)
+        return self.C_a * (into / r) ** RELIEF_EXPONENT
+
+    def unloaded_separation(self, xi):
+        """Smallest unloaded separation of a pair at ξ [m]: its profile gap plus the lengthwise
+        ease-off at the point of the contact line nearest the contact centre (zero while the
+        centre lies on the line)."""
+        off = np.maximum(np.abs(sur.lengthwise_position(self.gs, xi)) - 0.5 * self.line_length, 0.0)
+        return self.profile_gap(xi) + off ** 2 / (2.0 * self.gs.R_y)
 
     def gaps(self, xi):
         """Unloaded separations of the slices of pairs at ξ [m], shape ξ.shape + (N_SLICES,):
@@ -269,9 +298,32 @@ def loaded_mesh(flank, torque, n_theta=96):
     delta, q = share_load(W, gaps, A[..., None], B, width)
     W_pair = (q * width).sum(axis=-1)
     k_t = (slice_stiffness_tangent(q, A[..., None], B) * width).sum(axis=(-2, -1))
-    e_u = gaps.min(axis=(-2, -1))
+    e_u = np.where(engaged, flank.unloaded_separation(xi_c), np.inf).min(axis=-1)
     return LoadedMesh(torque, W, theta, delta, e_u, W / (delta - e_u), k_t, (W_pair / W).T,
                       ((q > 0.0).sum(axis=-1) * width).T)
+
+
+@lru_cache(maxsize=None)
+def relief_amount(gs, torque=DESIGN_TORQUE):
+    """Tip and root relief C_a [m] sized to the deflection at a pinion torque: the largest loaded
+    approach δ − e_u over a mesh cycle of the flank relieved by C_a itself, so that at that
+    torque a pair just reaches zero separation at the path ends and carries no load there (the
+    designer's rule: relief equal to the deflection at the design load). Found from the
+    full-face deflection W/k_n by secant steps on the excess max(δ − e_u) − C_a, which falls
+    monotonically: a larger relief adds to δ only through the load the relieved pairs shed."""
+    def excess(C):  # deflection beyond the relief C [m]
+        m = loaded_mesh(LoadedFlank(gs, C), torque, SIZING_ANGLES)
+        return float(np.max(m.delta - m.e_u)) - C
+
+    a = torque / gs.R_p0 / gs.k_n
+    f_a = excess(a)
+    b = a + f_a  # one fixed-point step, then secant steps on the excess
+    for _ in range(20):
+        f_b = excess(b)
+        if abs(f_b) < 1e-10:
+            return b
+        a, f_a, b = b, f_b, b - f_b * (b - a) / (f_b - f_a)
+    raise RuntimeError(f"relief sizing did not converge at {torque} N·m (last {b:g} m)")
 
 
 def loaded_flanks(blank, torques=TORQUES, n_theta=96):

@@ -145,3 +145,64 @@ def test_loaded_transmission_error_closes_the_static_balance():
     gaps = np.where(engaged[..., None], fl.gaps(xi), np.inf)
     q = tl.slice_load(m.delta[:, None, None] - gaps, A[..., None], B)
     assert np.allclose(q.sum(axis=(-2, -1)) * width, m.W, rtol=1e-9)
+
+
+def _end_shares(fl, torque, n_theta=256, reach=0.02):
+    """Largest load share of a pair within `reach` (engagement coordinate) of either path end."""
+    m = tl.loaded_mesh(fl, torque, n_theta=n_theta)
+    xi = sur.xi_pairs(fl.gs, m.theta)
+    near_end = (np.minimum(xi, 1.0 - xi) < reach) & (xi >= 0.0) & (xi < 1.0)
+    return float(np.max(np.where(near_end, m.shares, 0.0)))
+
+
+@pytest.mark.parametrize("n", SETS)
+@pytest.mark.parametrize("side", tl.FLANKS)
+def test_pairs_enter_and_leave_the_path_unloaded_up_to_the_design_load(n, side):
+    """With the tip and root relief sized to the deflection at DESIGN_TORQUE a pair meets the
+    relieved flank only inside the path: near either end of the path it carries no load at any
+    torque up to the design torque (today's 20 µm parabolic ease-off let a pair enter with 20 %
+    of the load at 100 N·m). Above the design torque the deflection exceeds the relief and the
+    ends carry load again, so the relief is sized to the load, not merely large."""
+    fl, T_d = flank(n, side), tl.DESIGN_TORQUE
+    for T in (25.0, 100.0, 0.75 * T_d):  # no load within 2 % of the path from either end
+        assert _end_shares(fl, T, reach=0.02) == 0.0, T
+    assert _end_shares(fl, T_d, reach=0.002) < 1e-3  # at the design torque: just at the ends
+    assert _end_shares(fl, 1.25 * T_d, reach=0.002) > 1e-2
+
+
+def test_the_old_parabolic_ease_off_fails_the_entry_check():
+    """The check above can fail: the unrelieved 20 µm parabola about the pitch point of the
+    first loaded model lets pairs enter the path loaded from light load on."""
+
+    class Parabola(tl.LoadedFlank):
+        def profile_gap(self, xi):
+            return 20e-6 * (2.0 * (np.asarray(xi, dtype=float) - self.xi_pitch)) ** 2
+
+    fl = Parabola(tl.flank_set(sur.TABLE_1[1], "drive"), relief=0.0)
+    assert _end_shares(fl, 25.0, reach=0.02) > 1e-2
+    assert _end_shares(fl, 100.0, reach=0.002) > 0.1
+
+
+@pytest.mark.parametrize("n", SETS)
+def test_contact_ratio_grows_from_the_unmodified_zone_to_the_whole_path(n):
+    """Only the unmodified middle of the path (UNMODIFIED mesh periods long, one pair at any
+    time) meets its mate at zero separation. Under a light load with mesh approach δ a relieved
+    pair carries where its parabolic relief C_a (t/ξ_r)² is below δ, within t = ξ_r √(δ/C_a) of
+    either start of relief, so the loaded contact ratio is UNMODIFIED + 2 ε_TCA ξ_r √(δ/C_a)
+    (hand calculation, δ its mean). At the design torque the contact reaches the path ends:
+    the whole engagement ε_TCA."""
+    fl, n_theta = flank(n), 256
+    for T in (0.1, 1.0):
+        m = tl.loaded_mesh(fl, T, n_theta=n_theta)
+        expect = tl.UNMODIFIED + 2 * fl.gs.eps_TCA * fl.xi_relief * math.sqrt(m.delta.mean() / fl.C_a)
+        assert m.contact_ratio == pytest.approx(expect, abs=0.015), T
+    design = tl.loaded_mesh(fl, tl.DESIGN_TORQUE, n_theta=n_theta).contact_ratio
+    assert design == pytest.approx(fl.gs.eps_TCA, abs=0.02)  # the last 1 % carries < 1e-6
+
+
+def test_unloaded_transmission_error_is_zero_with_an_unmodified_pair_always_in_mesh():
+    """The unmodified zone is one mesh period long, so at every mesh angle one pair meets its
+    mate with zero separation: e_u = 0 (no corners where pairs hand over)."""
+    m = tl.loaded_mesh(flank(1), 100.0, n_theta=64)
+    assert np.all(m.e_u == 0.0)
+    np.testing.assert_allclose(m.k_m, m.W / m.delta, rtol=1e-12)
