@@ -5,10 +5,13 @@ container; the scene and the energy balance.
 docs/cosimulation.md explains the coupling and the figures.
 
     python tests/cosim/cosim_driver.py [--steps 2e-3 1e-3 5e-4 2e-4 1e-4] [--json OUT] [--plot PNG]
+                                       [--doc docs/cosimulation.md]
 
 prints, for each communication step, the energy residual of the coupled system and how far the
 libcosim run is from the fmpy run, from the fmu-manipulation-toolbox container run by fmpy, from a
-Gauss-Seidel master and from the finest step.
+Gauss-Seidel master and from the finest step; then, at 1 ms, each gear tolerance setting of
+TOLERANCES against a converged run and the hosts against each other under it. --doc writes these
+tables into the document between its markers.
 
 Coupling (Jacobi, as libcosim's fixed_step_algorithm): both FMUs step over [t_n, t_n + h] with
 inputs held at the values of t_n, then outputs are transferred:
@@ -553,6 +556,121 @@ def print_table(rows):
             print(f"{r['h'] * 1e3:7.2f} {name:>8} " + " ".join(f"{c:9.2e}" for c in cols))
 
 
+# ------------------------------------------------------------------ tolerances and hosts
+
+
+# Gear settings for the comparison of tolerances and hosts. atol (m, on the DTE; the FMU scales the
+# speeds' by omega_4 / R_p: 5.2e-5 rad/s at 1e-10 m) dominates the speeds' tolerance at the
+# scene's 100-200 rpm unless it shrinks with rtol: atol = 1e-4 m x rtol, as the work-precision
+# benchmark pairs them (bench/wp_driver.py), makes rtol the tolerance in force.
+TIGHT = {"solver": 1, "rtol": 1e-10, "atol": 1e-14}  # CVODE BDF (code 1)
+CONVERGED = {"solver": 1, "rtol": 1e-12, "atol": 1e-16}
+# an independent check of CONVERGED: the explicit method (code 4) at steps of at most 5 us
+CHECK = ("arkode_erk, rtol 1e-10, atol 1e-14 m, max_step 5 µs (a check of the converged run)",
+         {"solver": 4, "rtol": 1e-10, "atol": 1e-14, "max_step": 5e-6})
+TOLERANCES = [("defaults: arkode_erk, rtol 1e-6, atol 1e-10 m", {}),
+              ("cvode_bdf, rtol 1e-8, atol 1e-10 m", {"solver": 1, "rtol": 1e-8}),
+              ("cvode_bdf, rtol 1e-10, atol 1e-10 m", {"solver": 1, "rtol": 1e-10}),
+              ("cvode_bdf, rtol 1e-8, atol 1e-12 m", {"solver": 1, "rtol": 1e-8, "atol": 1e-12}),
+              ("cvode_bdf, rtol 1e-10, atol 1e-14 m", TIGHT)]
+
+
+def tolerance_study(h=1e-3, container=True):
+    """Each setting of TOLERANCES at step h: w_p's largest difference from the CONVERGED run
+    (relative to max |w_p|), and libcosim's and the container's from our master under it."""
+    container = container and container_available() is None
+    reference = run_fmpy(Scene(gear=CONVERGED), h)
+    tmp = pathlib.Path(tempfile.mkdtemp(prefix="cosim-tol-"))
+    rows = []
+    try:
+        for k, (label, gear) in enumerate(TOLERANCES):
+            scene = Scene(gear=gear)
+            own = run_fmpy(scene, h)
+            row = {"setting": label, "gear": gear,
+                   "vs_converged": difference(own, reference)["gear.w_p"]["rel"],
+                   "libcosim_vs_fmpy": difference(run_libcosim(scene, h), own)["gear.w_p"]["rel"]}
+            if container:
+                box = run_container(scene, h, make_container(scene, h, tmp / str(k)))
+                row["container_vs_fmpy"] = difference(box, own)["gear.w_p"]["rel"]
+            rows.append(row)
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+    check = run_fmpy(Scene(gear=CHECK[1]), h)
+    rows.append({"setting": CHECK[0], "gear": CHECK[1],
+                 "vs_converged": difference(check, reference)["gear.w_p"]["rel"]})
+    return rows
+
+
+def _e(x):
+    """2 significant digits: 1.4e-11, 3.2e-02 as 3.2e-2."""
+    return "—" if x is None or not math.isfinite(x) else f"{x:.1e}".replace("e-0", "e-").replace(
+        "e+00", "")
+
+
+def energy_table(rows):
+    lines = ["| h | W_Ts (J) | residual (J) | residual / W_Ts | coupling term (J) | "
+             "gear's own closure (J) | vehicle's own (J) |", "|---|---|---|---|---|---|---|"]
+    for r in rows:
+        e, bold = r["energy"], "**" if r["h"] in (1e-3, 1e-4) else ""
+        lines.append(f"| {bold}{r['h'] * 1e3:g} ms{bold} | {e['W_Ts']:.2f} | "
+                     f"{bold}{e['residual']:.3g}{bold} | {bold}{_e(e['relative_residual'])}{bold} "
+                     f"| {e['coupling']:.3g} | {_e(e['gear_closure'])} | "
+                     f"{_e(e['vehicle_closure'])} |")
+    return lines
+
+
+def hosts_table(rows):
+    lines = ["| h | output | libcosim − fmpy (Jacobi) | container − fmpy | Jacobi − Gauss-Seidel "
+             "| vs 0.1 ms |", "|---|---|---|---|---|---|"]
+    for r in rows:
+        if r["h"] not in (1e-3, 1e-4):
+            continue
+        for name, label in (("w_p", "w_p"), ("T_w_out", "T_w seen (`T_w_out`)"), ("eta", "eta")):
+            key = "rms_rel" if name == "eta" else "rel"
+            cols = [r.get(k, {}).get("gear." + name, {}).get(key) for k in
+                    ("libcosim_vs_fmpy", "container_vs_fmpy", "jacobi_vs_gauss_seidel",
+                     "vs_finest")]
+            lines.append(f"| {r['h'] * 1e3:g} ms | {label} | " + " | ".join(map(_e, cols)) + " |")
+    return lines
+
+
+def tolerance_table(rows):
+    lines = ["| gear settings | our master − converged | libcosim − our master | "
+             "container − our master |",
+             "|---|---|---|---|"]
+    for r in rows:
+        lines.append(f"| {r['setting']} | {_e(r['vs_converged'])} | "
+                     f"{_e(r.get('libcosim_vs_fmpy'))} | {_e(r.get('container_vs_fmpy'))} |")
+    return lines
+
+
+def write_doc(path, rows, tol_rows):
+    """The three tables into the document at path, each between its markers
+    <!-- cosim-NAME:begin ... --> and <!-- cosim-NAME:end -->, with where they come from."""
+    import subprocess
+    commit = subprocess.run(["git", "-C", str(ROOT), "rev-parse", "--short", "HEAD"],
+                            capture_output=True, text=True).stdout.strip() or "?"
+    source = (f"*Generated by `tests/cosim/cosim_driver.py --doc docs/cosimulation.md` on {commit}, "
+              f"{time.strftime('%Y-%m-%d')}; w_p's largest difference over max |w_p|.*")
+    text = pathlib.Path(path).read_text()
+    for name, lines in (("energy", energy_table(rows)), ("hosts", hosts_table(rows)),
+                        ("tolerances", tolerance_table(tol_rows) + ["", source])):
+        begin, end = f"<!-- cosim-{name}:begin", f"<!-- cosim-{name}:end -->"
+        i, j = text.find(begin), text.find(end)
+        if i < 0 or j < i:
+            sys.exit(f"cosim_driver: {path} has no {name} table markers")
+        i = text.index("-->", i) + 3
+        text = text[:i] + "\n" + "\n".join(lines) + "\n" + text[j:]
+    pathlib.Path(path).write_text(text)
+
+
+def print_tolerances(rows):
+    print("gear tolerance settings at 1 ms: w_p vs converged, libcosim - fmpy, container - fmpy:")
+    for r in rows:
+        print(f"  {r['setting']:<48} {_e(r['vs_converged']):>8} "
+              f"{_e(r.get('libcosim_vs_fmpy')):>8} {_e(r.get('container_vs_fmpy')):>8}")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--steps", type=float, nargs="+", default=[2e-3, 1e-3, 5e-4, 2e-4, 1e-4])
@@ -560,6 +678,7 @@ def main():
     ap.add_argument("--no-container", action="store_true")
     ap.add_argument("--json", help="write the summary here")
     ap.add_argument("--plot", help="write the figure here (PNG)")
+    ap.add_argument("--doc", help="write the tables into this document (docs/cosimulation.md)")
     args = ap.parse_args()
     why = libcosim_available()
     if why:
@@ -567,10 +686,15 @@ def main():
     runs, rows = study(sorted(args.steps, reverse=True), gauss_seidel=not args.no_gauss_seidel,
                        container=not args.no_container)
     print_table(rows)
+    tol_rows = tolerance_study(container=not args.no_container)
+    print_tolerances(tol_rows)
     if args.json:
-        pathlib.Path(args.json).write_text(json.dumps(rows, indent=1, default=float))
+        pathlib.Path(args.json).write_text(json.dumps({"steps": rows, "tolerances": tol_rows},
+                                                      indent=1, default=float))
     if args.plot:
         plot(runs, rows, args.plot)
+    if args.doc:
+        write_doc(args.doc, rows, tol_rows)
     return 0
 
 
