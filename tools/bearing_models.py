@@ -28,7 +28,7 @@ from hypoid.variables import VARIABLES  # noqa: E402
 
 # The pairs: bearings (FMU name: d, D [mm] of the catalogue size), SKF series constants, the
 # preload parameter and the shaft's speed per pinion speed (gear set 1, 13:36). Pinion: 32308
-# (head) and 32306 (tail); carrier: two 32010 X (the FMU's d_m 62 mm is a little under their 65).
+# (head) and 32306 (tail); carrier: two 32010 X (the FMU's defaults are their catalogue d_m and Y).
 SKF_323 = dict(R1=2.38e-6, R2=10.9, S1=0.019, S2=2.0)
 SKF_320X = dict(R1=2.38e-6, R2=10.9, S1=0.014, S2=2.0)
 PAIRS = {"pinion": ({"ph": (40.0, 90.0), "pt": (30.0, 72.0)}, SKF_323, "F_pre_p", 1.0),
