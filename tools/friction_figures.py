@@ -6,8 +6,9 @@ coefficient of the FZG gear-test correlation (docs/friction-evidence.md):
         [--before friction_preset=paper]
 
 --before names the settings of the "before" column (default: the paper's friction on the
-default tooth data; tooth_data=paper gives the change of the default tooth data,
-docs/physics.md §10.8, preset=paper the whole paper against the defaults).
+default tooth data; preset=paper: the whole paper against the defaults), --after those of the
+"after" column (default: none, the FMU's defaults); `--before tooth_data=paper --after
+tooth_data=loaded` gives what the loaded tooth data change (docs/physics.md §10.8).
 
 Each point: the regression scenario protocol (hypoid/regress.py: 60 mesh cycles to settle, 20
 recorded, 40 degC bath, gear set 1); mu is the load-weighted mean over the pairs, P_loss the mean
@@ -52,23 +53,26 @@ def main(argv):
     ap.add_argument("--fmu", default="build/HypoidGearPair.fmu")
     ap.add_argument("--before", nargs="+", default=["friction_preset=paper"],
                     metavar="NAME=VALUE", help="the settings of the 'before' column")
+    ap.add_argument("--after", nargs="+", default=[], metavar="NAME=VALUE",
+                    help="the settings of the 'after' column (default: the FMU's defaults)")
     args = ap.parse_args(argv)
-    before = dict(item.split("=", 1) for item in args.before)
+    before, after = (dict(item.split("=", 1) for item in a) for a in (args.before, args.after))
     label = "paper" if before == {"friction_preset": "paper"} else " ".join(args.before)
+    new = " ".join(args.after) or "default"
     inst = Instance(args.fmu)
-    print(f"| oil | rpm | N·m | μ {label} | μ default | μ_mZ ISO/TR 14179-2 | P_loss {label} [W] "
-          f"| P_loss default [W] | ΔP_loss / P_loss | η {label} | η default |")
+    print(f"| oil | rpm | N·m | μ {label} | μ {new} | μ_mZ ISO/TR 14179-2 | P_loss {label} [W] "
+          f"| P_loss {new} [W] | ΔP_loss / P_loss | η {label} | η {new} |")
     print("|---|---|---|---|---|---|---|---|---|---|---|")
     for lub, oil in OILS.items():
         for rpm in SPEEDS:
             for T in TORQUES:
                 point = {"lubricant": lub, "T_s": T, SPEED_KEY: rpm}
                 a = run_scenario(inst, {**point, **before})
-                b = run_scenario(inst, point)
+                b = run_scenario(inst, {**point, **after})
                 dP = b["P_loss_mean_W"] / a["P_loss_mean_W"] - 1.0
                 print(f"| {oil} | {rpm:.0f} | {T:.0f} | {a['mu_mean']:.4f} | {b['mu_mean']:.4f} "
                       f"| {mu_mz(T, rpm):.4f} | {a['P_loss_mean_W']:.1f} "
-                      f"| {b['P_loss_mean_W']:.1f} | {100 * dP:+.0f} % "
+                      f"| {b['P_loss_mean_W']:.1f} | {100 * dP:+.1f} % "
                       f"| {a['eta_rms']:.4f} | {b['eta_rms']:.4f} |", flush=True)
     inst.close()
 
