@@ -203,7 +203,28 @@ def report(s, label, level="##", n=13):
     return "\n".join(lines)
 
 
-def findings_section(k_m=SET1["k_m"], R_p=SET1["R_p"]):
+VARIANTS = (("Table 3 (I_p = 0.014 kg·m²)", TABLE3["I_p"]),
+            (f"Pinion inertia from its geometry (I_p = {I_P_GEOMETRY:g} kg·m²)", I_P_GEOMETRY))
+
+
+def inertia_reports(k_m, R_p, fmu_dampers=None, level="###"):
+    """report() for Table 3's and the geometric pinion inertia at k_m, R_p; fmu_dampers
+    {I_p: (c_t1, c_m, c_t2)} adds the row of the dampers the FMU chose at its default ratios."""
+    out = []
+    for label, ip in VARIANTS:
+        s = system(I_p=ip, k_m=k_m, R_p=R_p)
+        text = report(s, label, level)
+        c = (fmu_dampers or {}).get(ip)
+        if c is not None:
+            text += ("\n\nThe FMU's dampers at its default ratios (0.02 / 0.04 / 0.03) in the "
+                     "study, with the ratios they achieve:\n\n| zeta_2 | zeta_3 | zeta_4 | "
+                     "c_t1, c_m, c_t2 | DTE gain at mode 2 / 3 / 4 | mode 2 / mode 3 |\n"
+                     "|---|---|---|---|---|---|\n" + fallback_row(s, c))
+        out.append(text)
+    return "\n\n".join(out)
+
+
+def findings_section(k_m=SET1["k_m"], R_p=SET1["R_p"], fmu_dampers=None):
     """The report's modal section: why Table 3's inertias put the strongest DTE resonance at
     mode 2 (~1200 rpm), and where the geometric pinion inertia moves it, with the mode shapes and
     the DTE gains per damping set at the study's mean mesh stiffness and lever arm."""
@@ -221,9 +242,7 @@ def findings_section(k_m=SET1["k_m"], R_p=SET1["R_p"]):
         f"{rpm(geo, wg[2]):.0f} rpm and mode 2's "
         f"gain is {log:.2f}-{hig:.1f} times mode 3's (the what-if section below runs it; "
         "`python -m hypoid.modes` prints these tables; docs/paper-findings.md).", "",
-        report(t3, "Table 3 (I_p = 0.014 kg m^2)", "###"), "",
-        report(geo, f"Pinion inertia from its geometry (I_p = {I_P_GEOMETRY} kg m^2)", "###"),
-        ""])
+        inertia_reports(k_m, R_p, fmu_dampers), ""])
 
 
 def _estimate_text():

@@ -111,7 +111,20 @@ def _modal_section(modal):
     if ref.empty:
         return modes.findings_section()
     return modes.findings_section(float(ref["k_m0 [N/m]"].iloc[0]),
-                                  float(ref["R_p0 [m]"].iloc[0]))
+                                  float(ref["R_p0 [m]"].iloc[0]), fmu_dampers(modal))
+
+
+def fmu_dampers(modal):
+    """{I_p: (c_t1, c_m, c_t2)} of gear set 1 at the reference and each what-if inertia, as the
+    FMU derived them (the modal table's damper columns)."""
+    out = {}
+    for r in modal.to_dict("records"):
+        label = str(r["gear set"])
+        if not label.startswith("1") or "c_m (damper)" not in r:
+            continue
+        ip = float(label.split("I_p = ")[1]) if "I_p = " in label else tb.REFERENCE["I_p"]
+        out[ip] = tuple(float(r[f"{n} (damper)"]) for n in ("c_t1", "c_m", "c_t2"))
+    return out
 
 
 def _pivot_lines(t, columns=None):

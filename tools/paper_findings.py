@@ -176,24 +176,12 @@ def whatif_block(d):
 def modal_block(d):
     """hypoid.modes at gear set 1's k_m0 and R_p0 as the study ran them, for Table 3 and the
     geometric pinion inertia, with the dampers the FMU chose for each (the study's rows)."""
-    rows = {str(r["gear set"]): r for r in d["modal"]}
-    ref = rows["1"]
-    out = []
-    for key, ip, label in (("1", modes.TABLE3["I_p"], "Table 3 (I_p = 0.014 kg·m²)"),
-                           (f"1, I_p = {modes.I_P_GEOMETRY:g}", modes.I_P_GEOMETRY,
-                            f"Pinion inertia from its geometry (I_p = {modes.I_P_GEOMETRY:g} "
-                            "kg·m²)")):
-        s = modes.system(I_p=ip, k_m=ref["k_m0 [N/m]"], R_p=ref["R_p0 [m]"])
-        text = modes.report(s, label, level="####")
-        r = rows.get(key)
-        if r is not None and "c_m (damper)" in r:
-            c = [r[f"{n} (damper)"] for n in ("c_t1", "c_m", "c_t2")]
-            text += ("\n\nThe FMU's dampers at its default ratios (0.02 / 0.04 / 0.03) in the "
-                     "study, with the ratios they achieve:\n\n| zeta_2 | zeta_3 | zeta_4 | "
-                     "c_t1, c_m, c_t2 | DTE gain at mode 2 / 3 / 4 | mode 2 / mode 3 |\n"
-                     "|---|---|---|---|---|---|\n" + modes.fallback_row(s, c))
-        out.append(text)
-    return "\n\n".join(out)
+    import pandas as pd
+
+    modal = pd.DataFrame(d["modal"])
+    ref = modal[modal["gear set"].astype(str) == "1"].iloc[0]
+    return modes.inertia_reports(float(ref["k_m0 [N/m]"]), float(ref["R_p0 [m]"]),
+                                 report.fmu_dampers(modal), level="####")
 
 
 def lubricant_block(d):
