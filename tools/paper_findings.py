@@ -222,9 +222,12 @@ def sensitivity_block(d):
 LOADED_FILE = ROOT / "resources" / "gearsets" / "loaded" / "gearset1.txt"
 LOADED_TORQUES = (50.0, 100.0, 300.0)
 NEAR_RPM = 150.0  # a DTE peak belongs to a mode within this distance of its modal speed
-LOADED_SWEEP = ("hypoid sweep --out DIR --set tooth_data=loaded roelands_z=simple "
-                "shear_pressure=mean Lambda_cap=0 relaxation=constant --vary T_s=50,100,300 "
-                "--vary speed_rpm=1000:3600:100")  # the study's paper choices, loaded tooth data
+LOADED_SET = ("--set tooth_data=loaded roelands_z=simple shear_pressure=mean Lambda_cap=0 "
+              "relaxation=constant")  # the study's paper choices with the loaded tooth data
+LOADED_SWEEP = (f"hypoid sweep --out DIR {LOADED_SET} --vary T_s=50,100,300 "
+                "--vary speed_rpm=1000:3600:100")
+LOADED_CONTINUATION = (f"hypoid sweep --out DIR {LOADED_SET} --vary T_s=50,100 "
+                       "--vary speed_rpm=1900:2400:50 --continuation")  # through mode 3
 
 
 def loaded_modes(path=LOADED_FILE, torques=LOADED_TORQUES):
@@ -258,8 +261,11 @@ def record_loaded(sweep):
     from hypoid import tables
 
     pts = tables.prepare(pd.read_csv(sweep / "points.csv"))
+    cont = tables.prepare(pd.read_csv(sweep / "continuation.csv")) \
+        if (sweep / "continuation.csv").exists() else pd.DataFrame()
     pred = loaded_modes()
-    out = {"modal": pred, "sweep": {}, "command": LOADED_SWEEP, "rows": len(pts),
+    out = {"modal": pred, "sweep": {}, "command": LOADED_SWEEP,
+           "continuation": LOADED_CONTINUATION if len(cont) else "", "rows": len(pts) + len(cont),
            "fmu_sha256": str(pts["fmu_sha256"].iloc[0]) if "fmu_sha256" in pts else "",
            "commit": _commit(), "recorded": datetime.date.today().isoformat()}
     for t, g in pts.groupby("T_s"):
@@ -271,8 +277,10 @@ def record_loaded(sweep):
             if len(band):
                 near[mode] = {"rpm": float(band.idxmax()), "DTE_pp_um": float(band.max()),
                               "dip": fd.dip(by["eta_rms"], m[mode])}
+        j = fd.jump(cont, 1, t, m["f3"], NEAR_RPM, tooth_data="loaded") \
+            if len(cont) and m else None
         out["sweep"][f"{t:g}"] = {
-            "near": near, "fmu_f3_rpm": float(by["n_f3_rpm"].iloc[0]),
+            "near": near, "jump_f3": j, "fmu_f3_rpm": float(by["n_f3_rpm"].iloc[0]),
             "separation_rpm": [float(n) for n in by.index[by["contact_loss_fraction"] > 0]],
             "max_DTE_pp_um": float(by["DTE_pp_um"].max()),
             "speeds": f"{by.index.min():g}-{by.index.max():g}"}
@@ -284,7 +292,8 @@ def loaded_block(d):
     rows = ["| T_s [N·m] | mean k_m [10⁸ N/m] | mode 2 / mode 3, modal [rpm] | their mesh share of "
             "strain energy | largest DTE p-p "
             f"within {NEAR_RPM:g} rpm of mode 2 / mode 3 [rpm: µm] | efficiency dip there "
-            "[%-points] | teeth apart at |", "|---|---|---|---|---|---|---|"]
+            "[%-points] | teeth apart at (grid speeds) | two branches through mode 3 "
+            "(continuation) |", "|---|---|---|---|---|---|---|---|"]
     for t, m in d["modal"].items():
         s = d["sweep"].get(t, {})
         near = s.get("near", {})
@@ -292,10 +301,15 @@ def loaded_block(d):
                            else "–" for k in ("f2", "f3"))
         dips = " / ".join("–" if near.get(k, {}).get("dip") is None else
                           f"{100 * near[k]['dip']:.3f}" for k in ("f2", "f3"))
-        sep = fd.speed_range(s["separation_rpm"]) if s.get("separation_rpm") else "none"
+        sep = _runs(s.get("separation_rpm", []), 100.0)
+        j = s.get("jump_f3")
+        jump = "not swept" if j is None else (
+            f"{_runs(j['speeds_two_branches'], 50.0)} (gap ≤ {j['max_branch_gap_um']:.1f} µm); "
+            f"min DTE − b {j['min_DTE_min_minus_b_um']:+.1f} µm, contact lost up to "
+            f"{100 * j['max_contact_loss']:.0f} %")
         rows.append(f"| {t} | {m['k_m'] / 1e8:.2f} | {m['f2']:.0f} / {m['f3']:.0f} | "
                     f"{m['mesh_share'][0]:.2f} / {m['mesh_share'][1]:.2f} | {peaks} | {dips} | "
-                    f"{sep} |")
+                    f"{sep} | {jump} |")
     ts = list(d["modal"])
     sep = [t for t in ts if d["sweep"].get(t, {}).get("separation_rpm")]
     dips = [100 * v["dip"] for s in d["sweep"].values() for v in s.get("near", {}).values()
@@ -309,7 +323,21 @@ def loaded_block(d):
                + f"; the deepest dip at a resonance is {max(dips):.3f} %-points"
                + (" (below the findings' 0.02 threshold)." if max(dips) < 100 * fd.DIP_MIN
                   else "."))
-    return "\n".join(rows + ["", summary, "", f"Sweep: `{d['command']}`."])
+    runs = f"Sweeps: `{d['command']}`" + (f"; `{d['continuation']}`" if d.get("continuation")
+                                         else "") + "."
+    return "\n".join(rows + ["", summary, "", runs])
+
+
+def _runs(speeds, step):
+    """'1200-1300, 2500 rpm' for the speeds in runs of `step`, 'none' for none."""
+    if not speeds:
+        return "none"
+    groups, start = [], speeds[0]
+    for a, b in zip(speeds, speeds[1:] + [None]):
+        if b is None or b - a > step + 1e-9:
+            groups.append(f"{start:g}" if start == a else f"{start:g}–{a:g}")
+            start = b
+    return ", ".join(groups) + " rpm"
 
 
 def _study(name, fn):
