@@ -241,6 +241,9 @@ def loaded_modes(path=LOADED_FILE, torques=LOADED_TORQUES):
     gs = read_gearset(path)
     levels = np.array(gs.torque_levels)
     k_m = np.array([gs.layers[("drive", i + 1)]["k_m"].mean for i in range(len(levels))])
+    psi = np.linspace(0.0, 2.0 * np.pi, 2001)
+    ripple = np.array([np.ptp(gs.layers[("drive", i + 1)]["k_m"](psi)) / k_m[i]
+                       for i in range(len(levels))])
     R_p = np.array([gs.layers[("drive", i + 1)]["R_p"].mean for i in range(len(levels))])
     out = {}
     for t in torques:
@@ -248,7 +251,8 @@ def loaded_modes(path=LOADED_FILE, torques=LOADED_TORQUES):
         w, phi = modes.modes(s)
         share = modes.mesh_strain_share(s, w, phi)
         out[f"{t:g}"] = {"k_m": s.k_m, "R_p": s.R_p, "f2": modes.rpm(s, w[1]),
-                         "f3": modes.rpm(s, w[2]), "mesh_share": [share[0], share[1]]}
+                         "f3": modes.rpm(s, w[2]), "mesh_share": [share[0], share[1]],
+                         "ripple": float(np.interp(t, levels, ripple))}
     return out
 
 
@@ -289,11 +293,11 @@ def record_loaded(sweep):
 
 def loaded_block(d):
     """Where gear set 1's resonances sit with the loaded tooth data."""
-    rows = ["| T_s [N·m] | mean k_m [10⁸ N/m] | mode 2 / mode 3, modal [rpm] | their mesh share of "
+    rows = ["| T_s [N·m] | mean k_m [10⁸ N/m] | k_m ripple (peak-to-peak / mean) | mode 2 / mode 3, modal [rpm] | their mesh share of "
             "strain energy | largest DTE p-p "
             f"within {NEAR_RPM:g} rpm of mode 2 / mode 3 [rpm: µm] | efficiency dip there "
             "[%-points] | teeth apart at (grid speeds) | two branches through mode 3 "
-            "(continuation) |", "|---|---|---|---|---|---|---|---|"]
+            "(continuation) |", "|---|---|---|---|---|---|---|---|---|"]
     for t, m in d["modal"].items():
         s = d["sweep"].get(t, {})
         near = s.get("near", {})
@@ -307,7 +311,8 @@ def loaded_block(d):
             f"{_runs(j['speeds_two_branches'], 50.0)} (gap ≤ {j['max_branch_gap_um']:.1f} µm); "
             f"min DTE − b {j['min_DTE_min_minus_b_um']:+.1f} µm, contact lost up to "
             f"{100 * j['max_contact_loss']:.0f} %")
-        rows.append(f"| {t} | {m['k_m'] / 1e8:.2f} | {m['f2']:.0f} / {m['f3']:.0f} | "
+        rows.append(f"| {t} | {m['k_m'] / 1e8:.2f} | {100 * m['ripple']:.0f} % | "
+                    f"{m['f2']:.0f} / {m['f3']:.0f} | "
                     f"{m['mesh_share'][0]:.2f} / {m['mesh_share'][1]:.2f} | {peaks} | {dips} | "
                     f"{sep} | {jump} |")
     ts = list(d["modal"])
