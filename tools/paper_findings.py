@@ -220,7 +220,6 @@ def sensitivity_block(d):
 
 
 LOADED_FILE = ROOT / "resources" / "gearsets" / "loaded" / "gearset1.txt"
-LOADED_TORQUES = (50.0, 100.0, 300.0)
 NEAR_RPM = 150.0  # a DTE peak belongs to a mode within this distance of its modal speed
 LOADED_SET = ("--set tooth_data=loaded roelands_z=simple shear_pressure=mean Lambda_cap=0 "
               "relaxation=constant")  # the study's paper choices with the loaded tooth data
@@ -230,10 +229,11 @@ LOADED_CONTINUATION = (f"hypoid sweep --out DIR {LOADED_SET} --vary T_s=50,100 "
                        "--vary speed_rpm=1900:2400:50 --continuation")  # through mode 3
 
 
-def loaded_modes(path=LOADED_FILE, torques=LOADED_TORQUES):
+def loaded_modes(stiffness, path=LOADED_FILE):
     """Gear set 1's mode 2 and 3 speeds with the loaded tooth data at each torque: hypoid.modes
-    at the drive flank's mean k_m and R_p interpolated linearly in the pinion torque between the
-    file's levels (as the FMU blends them on its filtered torque, physics.md §10.8)."""
+    at the mesh stiffness and lever arm the FMU linearises about, stiffness {torque: (k_m0,
+    R_p0)} (its calculated parameters in the sweep), beside the file's secant k_m and its ripple
+    interpolated linearly in the pinion torque between the levels (physics.md §10.8)."""
     import numpy as np
 
     from hypoid.gearset_file import read_gearset
@@ -244,14 +244,14 @@ def loaded_modes(path=LOADED_FILE, torques=LOADED_TORQUES):
     psi = np.linspace(0.0, 2.0 * np.pi, 2001)
     ripple = np.array([np.ptp(gs.layers[("drive", i + 1)]["k_m"](psi)) / k_m[i]
                        for i in range(len(levels))])
-    R_p = np.array([gs.layers[("drive", i + 1)]["R_p"].mean for i in range(len(levels))])
     out = {}
-    for t in torques:
-        s = modes.system(k_m=float(np.interp(t, levels, k_m)), R_p=float(np.interp(t, levels, R_p)))
+    for t, (k_m0, R_p0) in stiffness.items():
+        s = modes.system(k_m=k_m0, R_p=R_p0)
         w, phi = modes.modes(s)
         share = modes.mesh_strain_share(s, w, phi)
-        out[f"{t:g}"] = {"k_m": s.k_m, "R_p": s.R_p, "f2": modes.rpm(s, w[1]),
-                         "f3": modes.rpm(s, w[2]), "mesh_share": [share[0], share[1]],
+        out[f"{t:g}"] = {"k_m0": s.k_m, "R_p": s.R_p, "k_m_secant": float(np.interp(t, levels, k_m)),
+                         "f2": modes.rpm(s, w[1]), "f3": modes.rpm(s, w[2]),
+                         "mesh_share": [share[0], share[1]],
                          "ripple": float(np.interp(t, levels, ripple))}
     return out
 
@@ -267,7 +267,9 @@ def record_loaded(sweep):
     pts = tables.prepare(pd.read_csv(sweep / "points.csv"))
     cont = tables.prepare(pd.read_csv(sweep / "continuation.csv")) \
         if (sweep / "continuation.csv").exists() else pd.DataFrame()
-    pred = loaded_modes()
+    first = pts.groupby("T_s").first()
+    pred = loaded_modes({float(t): (float(r["k_m0"]), float(r["R_p0"]))
+                         for t, r in first.iterrows()})
     out = {"modal": pred, "sweep": {}, "command": LOADED_SWEEP,
            "continuation": LOADED_CONTINUATION if len(cont) else "", "rows": len(pts) + len(cont),
            "fmu_sha256": str(pts["fmu_sha256"].iloc[0]) if "fmu_sha256" in pts else "",
@@ -293,7 +295,8 @@ def record_loaded(sweep):
 
 def loaded_block(d):
     """Where gear set 1's resonances sit with the loaded tooth data."""
-    rows = ["| T_s [N·m] | mean k_m [10⁸ N/m] | k_m ripple (peak-to-peak / mean) | mode 2 / mode 3, modal [rpm] | their mesh share of "
+    rows = ["| T_s [N·m] | k_m: the file's secant mean / the FMU's k_m0 [10⁸ N/m] | k_m ripple "
+            "(peak-to-peak / mean) | mode 2 / mode 3, modal at k_m0 [rpm] | their mesh share of "
             "strain energy | largest DTE p-p "
             f"within {NEAR_RPM:g} rpm of mode 2 / mode 3 [rpm: µm] | efficiency dip there "
             "[%-points] | teeth apart at (grid speeds) | two branches through mode 3 "
@@ -311,7 +314,8 @@ def loaded_block(d):
             f"{_runs(j['speeds_two_branches'], 50.0)} (gap ≤ {j['max_branch_gap_um']:.1f} µm); "
             f"min DTE − b {j['min_DTE_min_minus_b_um']:+.1f} µm, contact lost up to "
             f"{100 * j['max_contact_loss']:.0f} %")
-        rows.append(f"| {t} | {m['k_m'] / 1e8:.2f} | {100 * m['ripple']:.0f} % | "
+        rows.append(f"| {t} | {m['k_m_secant'] / 1e8:.2f} / {m['k_m0'] / 1e8:.2f} | "
+                    f"{100 * m['ripple']:.0f} % | "
                     f"{m['f2']:.0f} / {m['f3']:.0f} | "
                     f"{m['mesh_share'][0]:.2f} / {m['mesh_share'][1]:.2f} | {peaks} | {dips} | "
                     f"{sep} | {jump} |")
