@@ -281,7 +281,7 @@ def test_bdf_converges_in_the_scene(run):
     (cd.CONVERGED: rtol 1e-12, atol 1e-16 m; the explicit method at steps of at most 2 us agrees
     with those to 2.5e-8): measured 1.4e-6 of w_p, the largest right after the tip-in's backlash
     crossing (1.84 s). With the default atol of 1e-10 m, rtol 1e-8 and rtol 1e-10 were 6.0e-3 and
-    4.2e-3 away (and 1.7e-3 from each other): the speeds' absolute tolerance, not rtol, was in
+    4.2e-3 away (and 1.8e-3 from each other): the speeds' absolute tolerance, not rtol, was in
     force."""
     d = cd.difference(run("fmpy", STEPS[0]), cd.run_fmpy(cd.Scene(gear=cd.CONVERGED), STEPS[0]))
     assert d["gear.w_p"]["rel"] < 2e-5
