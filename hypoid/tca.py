@@ -132,8 +132,8 @@ def loaded_surrogate(set_no, torques=tl.TORQUES, harmonics=CONTACT_HARMONICS,
         "", "Loaded tooth contact (§10.8): secant k_m, load shares and R_p per pinion torque level, both",
         "  flanks (coast: alpha_nC = alpha_e - alpha_lim); e_0 the unloaded transmission error; lengthwise "
         f"ease-off {sur.DELTA_END * 1e6:g} um;",
-        f"  parabolic tip/root relief over {relief_lengths} mm of roll, C_a {relief_amounts} um "
-        f"(drive/coast) = the deflection at {tl.DESIGN_TORQUE:g} N m."]
+        f"  tip/root relief C_a (t/L)^{tl.RELIEF_EXPONENT:g} over L = {relief_lengths} mm of roll, C_a "
+        f"{relief_amounts} um (drive/coast) = the deflection at {tl.DESIGN_TORQUE:g} N m."]
     return Gearset(name, blank.N_p, blank.N_g, {"e_0": e_0}, comments, notes,
                    torque_levels=tuple(float(t) for t in torques), flanks=tl.FLANKS,
                    layers=layers)

@@ -30,8 +30,8 @@ G_STEEL = E_STEEL / (2.0 * (1.0 + NU_STEEL))  # shear modulus [Pa]
 SHEAR_FORM = 1.2  # shear form factor of a rectangular section
 CLEARANCE = 0.25  # root clearance / m_mn (ASSUMED)
 DESIGN_TORQUE = 400.0  # pinion torque the tip and root relief is sized for [N·m] (top of TORQUES)
-UNMODIFIED = 1.0  # length of the unmodified (conjugate) middle of the path [mesh periods]
-RELIEF_EXPONENT = 2.0  # shape of the relief: C_a (t/ξ_r)^p, 2 = parabolic
+UNMODIFIED = 1.15  # length of the unmodified (conjugate) middle of the path [mesh periods]
+RELIEF_EXPONENT = 2.5  # shape of the relief: C_a (t/ξ_r)^p (2 would be parabolic)
 SIZING_ANGLES = 128  # mesh angles of the relief sizing (relief_amount)
 N_SLICES = 41  # slices along a contact line
 N_QUAD = 48  # Gauss points along a tooth
@@ -199,8 +199,8 @@ class LoadedFlank:
 
     def profile_gap(self, xi):
         """Unloaded separation of a pair from the profile ease-off [m]: zero on the unmodified
-        middle of the path, a parabolic relief C_a (t/ξ_r)² tangent to it over the last ξ_r of
-        either end (t the distance into the relief: the gear's tip and the pinion's root at the
+        middle of the path, a relief C_a (t/ξ_r)^RELIEF_EXPONENT tangent to it over the last ξ_r
+        of either end (t the distance into the relief: the gear's tip and the pinion's root at the
         approach end, the pinion's tip and the gear's root at the recess end)."""
         xi, r = np.asarray(xi, dtype=float), self.xi_relief
         into = np.maximum(np.maximum(r - xi, xi - (1.0 - r)), 0.0)

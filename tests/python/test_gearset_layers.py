@@ -38,7 +38,7 @@ def test_round_trip(layered):
 def test_levels_stiffen_and_flanks_differ(layered):
     g = layered[1]
     for flank in g.flanks:
-        assert g.layers[(flank, 2)]["k_m"].mean > 3 * g.layers[(flank, 1)]["k_m"].mean
+        assert g.layers[(flank, 2)]["k_m"].mean > 2.5 * g.layers[(flank, 1)]["k_m"].mean  # 25 → 400 N·m
     assert g.layers[("coast", 1)]["R_p"].mean < g.layers[("drive", 1)]["R_p"].mean
 
 
