@@ -11,7 +11,7 @@ from typing import NamedTuple
 
 MODEL_NAME = 'HypoidGearPair'
 MODEL_VERSION = '0.1.0'
-GUID = '{359e4b3d-caae-5e67-a797-3ec95b2326a2}'
+GUID = '{3ebbfa08-985b-5f79-a4fe-ef5c1a82cda8}'
 
 
 class Variable(NamedTuple):

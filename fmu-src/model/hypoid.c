@@ -90,9 +90,6 @@ static int make_solver(hg_model *m, char *err, size_t errlen)
     opt.rtol = m->s.rtol;
     opt.atol = m->s.atol;
     opt.max_steps = MAX_SOLVER_STEPS;
-    /* layered tooth data: their mesh's input-shaft response, not the step limit, sets the
-       explicit steps (docs/model.md, "The explicit method's table") */
-    opt.erk_table = m->s.gear.n_levels > 1 ? HG_ERK_7_STAGES : HG_ERK_6_STAGES;
     hg_solver_free(m->solver);
     m->solver = hg_solver_new(HG_NY, HG_STEPPING_N_ROOTS, rhs, roots, m, &opt, err, errlen);
     return m->solver ? 0 : -1;

@@ -12,23 +12,14 @@ typedef enum {
     HG_METHOD_BDF,    /* CVODE variable-order BDF */
     HG_METHOD_ADAMS,  /* CVODE variable-order Adams-Moulton */
     HG_METHOD_NEWMARK, /* fixed-step Newmark-beta, beta = 1/4, gamma = 1/2 (the paper's scheme) */
-    HG_METHOD_ERK      /* ARKODE explicit embedded Runge-Kutta (hg_erk_table) */
+    HG_METHOD_ERK      /* ARKODE explicit embedded Runge-Kutta, ARK4(3)6L[2]SA */
 } hg_method;
-
-/* The explicit method's table (Kennedy and Carpenter's explicit ARK tables, order 4 with an
- * order-3 embedding). */
-typedef enum {
-    HG_ERK_6_STAGES, /* ARK4(3)6L[2]SA: the fewest right-hand sides where a step limit, not the
-                        error estimate, sets the steps */
-    HG_ERK_7_STAGES  /* ARK4(3)7L[2]SA: a smaller error per step for one stage more */
-} hg_erk_table;
 
 typedef struct {
     hg_method method;
     double rtol;
     const double *atol; /* one per state */
     long max_steps;     /* internal steps allowed per hg_solver_advance call */
-    hg_erk_table erk_table; /* HG_METHOD_ERK's table */
 } hg_solver_options;
 
 typedef struct hg_solver hg_solver;

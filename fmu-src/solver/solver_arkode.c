@@ -3,11 +3,9 @@
  * costs its stages' right-hand sides and a few fused vector operations, which suits the compliant
  * meshes, whose stiffest mode (the input shaft's, ~1.7 kHz) must be resolved anyway. The pair is
  * Kennedy and Carpenter's ARK4(3)6L[2]SA explicit table (6 stages, order 4 with an order-3
- * embedding): of the tables ARKODE ships, the cheapest per mesh cycle at equal accuracy where the
- * model's step limit sets the steps (bench/bench_fmu.c; Dormand-Prince 5(4) needs 1.4 times the
- * right-hand sides), or their ARK4(3)7L[2]SA (7 stages), the cheapest where the error estimate
- * sets them (hg_erk_table). The operations themselves are sun_common.c's over the table API
- * below. */
+ * embedding): of the tables ARKODE ships, the cheapest per mesh cycle at equal accuracy here
+ * (bench/bench_fmu.c; Dormand-Prince 5(4) needs 1.4 times the right-hand sides). The operations
+ * themselves are sun_common.c's over the table API below. */
 #include "solver/sun_common.h"
 
 #include <arkode/arkode_erkstep.h>
@@ -26,9 +24,7 @@ static int configure(hg_sun *b, const hg_solver_options *opt, char *err, size_t 
     HG_SUN_CALL(b, ERKStepSetUserData, (b->mem, b));
     HG_SUN_CALL(b, ERKStepSVtolerances, (b->mem, opt->rtol, b->atol));
     HG_SUN_CALL(b, ERKStepSetMaxNumSteps, (b->mem, opt->max_steps));
-    HG_SUN_CALL(b, ERKStepSetTableNum,
-                (b->mem, opt->erk_table == HG_ERK_7_STAGES ? ARKODE_ARK437L2SA_ERK_7_3_4
-                                                            : ARKODE_ARK436L2SA_ERK_6_3_4));
+    HG_SUN_CALL(b, ERKStepSetTableNum, (b->mem, ARKODE_ARK436L2SA_ERK_6_3_4));
     if (b->pb.n_roots > 0)
         HG_SUN_CALL(b, ERKStepRootInit, (b->mem, b->pb.n_roots, hg_sun_roots));
     return 0;
