@@ -88,13 +88,31 @@ def _surrogate_comments(set_no, gs, harmonics, contact_harmonics):
 
 # --- loaded surrogate: both flanks at several torques (docs/physics.md §10.8) -------------------
 
+LEVEL_LOAD_PASSES = 3  # fixed-point passes of a level's load on its own mean contact radius
+
+
+def level_mesh(model, torque, n_cycle=N_SAMPLES // 3):
+    """The loaded mesh of one flank at the normal load the FMU transmits at a pinion torque:
+    W = torque / mean R_p, the mean of the load-shared contact radius R_p(θ) that the level
+    writes (the FMU's levels are torques of |W_t| R_p; docs/physics.md §10.8, "In the FMU").
+    R_p depends on the load shares, so a fixed point from W = torque / R_p0. Returns the mesh and
+    R_p(θ)."""
+    gs, T = model.gs, torque
+    for _ in range(LEVEL_LOAD_PASSES):
+        m = tl.loaded_mesh(model, T, n_theta=n_cycle)
+        xi = sur.xi_pairs(gs, m.theta)
+        R_p = (m.shares * gs.R_p0 * (1.0 + sur.lengthwise_position(gs, xi) / gs.R_m1)).sum(axis=0)
+        T = torque * gs.R_p0 / R_p.mean()
+    return m, R_p
+
+
 def loaded_samples(model, torque, n_cycle=N_SAMPLES // 3):
     """Samples of one flank at one pinion torque: k_m and R_p at n_cycle mesh angles θ of one
-    cycle, the pair series at the 3 n_cycle angles ψ of grid(3 n_cycle), and the unloaded e_u."""
-    gs, m = model.gs, tl.loaded_mesh(model, torque, n_theta=n_cycle)
-    xi = sur.xi_pairs(gs, m.theta)
-    arm = gs.R_p0 * (1.0 + sur.lengthwise_position(gs, xi) / gs.R_m1)
-    samples = {"k_m": m.k_m, "R_p": (m.shares * arm).sum(axis=0),
+    cycle, the pair series at the 3 n_cycle angles ψ of grid(3 n_cycle), and the unloaded e_u.
+    k_m is the secant W/(δ − e_u) at the level's load (level_mesh), the static point through
+    which the FMU's force law passes."""
+    gs, (m, R_p) = model.gs, level_mesh(model, torque, n_cycle)
+    samples = {"k_m": m.k_m, "R_p": R_p,
                "ls": m.shares.reshape(-1)}  # pair 1 at ψ_k is pair k // n of θ_(k mod n)
     samples.update(sur.pair_contact(gs, grid(3 * n_cycle)))
     return samples, m.e_u
@@ -129,7 +147,7 @@ def loaded_surrogate(set_no, torques=tl.TORQUES, harmonics=CONTACT_HARMONICS,
     comments = _surrogate_comments(set_no, gs, harmonics, contact_harmonics)[:2] + [
         "regenerate with `hypoid tca surrogate --all --loaded --out-dir resources/gearsets/loaded`,"
         " do not edit.", "Units SI (m, N/m, rad); series format in docs/data-files.md.",
-        "", "Loaded tooth contact (§10.8): secant k_m, load shares and R_p per pinion torque level, both",
+        "", "Loaded tooth contact (§10.8): secant k_m at W = torque/mean R_p, load shares, R_p per level, both",
         "  flanks (coast: alpha_nC = alpha_e - alpha_lim); e_0 the unloaded transmission error; lengthwise "
         f"ease-off {sur.DELTA_END * 1e6:g} um;",
         f"  tip/root relief C_a (t/L)^{tl.RELIEF_EXPONENT:g} over L = {relief_lengths} mm of roll, C_a "

@@ -31,6 +31,27 @@ static double shaft2_torque(const hg_dyn_params *p, const double *y)
     return p->k_t2 * y[HG_Y_TWIST2] + p->c_t2 * (y[HG_Y_W_G] - y[HG_Y_W_W]);
 }
 
+int hg_dyn_loaded_law(const hg_dyn_params *p)
+{
+    return p->mesh == HG_MESH_MODEL_VARYING && p->gear->n_levels > 1;
+}
+
+/* The force law of a layered file at theta on the flank in contact, the levels' stiffness from
+ * the tables or the series. */
+static void loaded_law(const hg_dyn_params *p, double theta, hg_dyn_eval *ev)
+{
+    double W[HG_MAX_LEVELS], k[HG_MAX_LEVELS], dk[HG_MAX_LEVELS];
+    hg_level_pick b;
+    if (!p->phase) {
+        hg_mesh_law_of_series(p->gear, ev->flank, theta, &ev->law);
+        return;
+    }
+    hg_gearset_level_at(p->gear, ev->flank, 0.0, &b);
+    hg_phase_table_stiffness(p->phase, b.flank, &ev->cell, k, dk);
+    hg_mesh_law_loads(p->gear, b.flank, W);
+    hg_mesh_law_points(p->gear->n_levels, W, k, dk, &ev->law);
+}
+
 /* Without backlash (or with a rigid mesh) both flanks touch: the net force loads one of them. */
 static void net_force_loads(hg_dyn_eval *ev)
 {
@@ -52,8 +73,19 @@ static void flank_loads(const hg_dyn_params *p, int mode, double x, hg_dyn_eval 
         return;
     }
     hg_backlash_flanks(&p->backlash, x, mode, &fl);
-    W_d = ev->mesh.k_m * fl.f_d + p->c_m * fl.g_d * ev->xdot;
-    W_b = ev->mesh.k_m * fl.f_b + p->c_m * fl.g_b * ev->xdot;
+    if (hg_dyn_loaded_law(p)) {
+        /* the law's force through the engagement: the force of the energy U(f_d) + U(-f_b) */
+        hg_law_force F_d, F_b;
+        hg_mesh_law_force(&ev->law, fl.f_d, &F_d);
+        hg_mesh_law_force(&ev->law, -fl.f_b, &F_b);
+        W_d = F_d.W * fl.g_d + p->c_m * fl.g_d * ev->xdot;
+        W_b = -F_b.W * fl.g_b + p->c_m * fl.g_b * ev->xdot;
+        ev->U_mesh = F_d.U + F_b.U;
+        ev->dU_mesh = F_d.dU + F_b.dU;
+    } else {
+        W_d = ev->mesh.k_m * fl.f_d + p->c_m * fl.g_d * ev->xdot;
+        W_b = ev->mesh.k_m * fl.f_b + p->c_m * fl.g_b * ev->xdot;
+    }
     ev->g = fl.g_d + fl.g_b;
     ev->W_t = W_d + W_b;
     ev->W_drive = W_d > 0.0 ? W_d : 0.0;
@@ -75,6 +107,7 @@ static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn
         } else {
             hg_gearset_mesh(p->gear, ev->flank, y[HG_Y_T_KM], theta, &ev->mesh);
         }
+        if (hg_dyn_loaded_law(p)) loaded_law(p, theta, ev);
         ev->f = hg_backlash_f(&p->backlash, y[HG_Y_X], mode);
         ev->Phi = hg_backlash_potential(&p->backlash, y[HG_Y_X], mode);
     } else {
@@ -315,8 +348,11 @@ void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const
     if (p->mesh == HG_MESH_MODEL_VARYING) {
         double N_p_w = p->gear->N_p * y[HG_Y_W_P];
         ev->T_km_dot = torque_filter_rate(p, y, ev);
-        ev->P_exc = -ev->W_t * ev->mesh.de_0 * N_p_w +
-                    (ev->mesh.dk_m * N_p_w + ev->mesh.dk_dT * ev->T_km_dot) * ev->Phi;
+        if (hg_dyn_loaded_law(p)) /* the law's energy changes with theta, not with T_km */
+            ev->P_exc = (ev->dU_mesh - ev->W_t * ev->mesh.de_0) * N_p_w;
+        else
+            ev->P_exc = -ev->W_t * ev->mesh.de_0 * N_p_w +
+                        (ev->mesh.dk_m * N_p_w + ev->mesh.dk_dT * ev->T_km_dot) * ev->Phi;
     }
 }
 
@@ -359,7 +395,9 @@ double hg_dyn_stored_energy(const hg_dyn_params *p, const double *y, const hg_dy
 {
     double ws = y[HG_Y_W_S], wp = y[HG_Y_W_P], wg = y[HG_Y_W_G], ww = y[HG_Y_W_W];
     double t1 = y[HG_Y_TWIST1], t2 = y[HG_Y_TWIST2];
-    double mesh = p->mesh == HG_MESH_MODEL_RIGID ? 0.0 : ev->mesh.k_m * ev->Phi;
+    double mesh = p->mesh == HG_MESH_MODEL_RIGID ? 0.0
+                  : hg_dyn_loaded_law(p)           ? ev->U_mesh
+                                                   : ev->mesh.k_m * ev->Phi;
     return 0.5 * (p->I_s * ws * ws + p->I_p * wp * wp + p->I_g * wg * wg + p->I_w * ww * ww) +
            0.5 * (p->k_t1 * t1 * t1 + p->k_t2 * t2 * t2) + mesh;
 }

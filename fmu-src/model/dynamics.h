@@ -13,6 +13,7 @@
 #include "model/phase_table.h"
 #include "model/gearset.h"
 #include "model/ledger.h"
+#include "model/mesh_law.h"
 
 enum {
     HG_Y_TWIST1, /* phi_s - phi_p [rad] */
@@ -84,6 +85,10 @@ typedef struct {
     double Q_dot;      /* heat from the housing to the air [W] */
     double P_damp, P_exc; /* damper dissipation and parametric excitation power [W] */
     double T_km_dot;   /* dT_km/dt [N m/s] */
+    double U_mesh;     /* elastic energy of the mesh of a layered file's force law [J] */
+    double dU_mesh;    /* its dU/dtheta at fixed x [J/rad] (the law's parametric excitation) */
+    hg_mesh_law law;   /* a layered file's force law at theta on the flank in contact
+                          (model/mesh_law.h); unused for one level, whose law is k_m f */
     int flank;         /* HG_FLANK_DRIVE or _COAST: whose tooth data apply (the drive flank's
                           off the varying mesh) */
     double W_pair[HG_MAX_PAIRS];
@@ -103,6 +108,10 @@ double hg_dyn_oil_temperature(const hg_dyn_params *p, const hg_inputs *u, const 
 /* dy/dt from an evaluation at y. */
 void hg_dyn_derivatives(const hg_dyn_params *p, const hg_inputs *u, const double *y,
                         const hg_dyn_eval *ev, double *ydot);
+
+/* Whether the mesh force follows the layered file's force law (model/mesh_law.h) instead of
+ * k_m f(x): the varying mesh with tooth data of several torque levels. */
+int hg_dyn_loaded_law(const hg_dyn_params *p);
 
 /* Kinetic plus elastic energy at y [J]. */
 double hg_dyn_stored_energy(const hg_dyn_params *p, const double *y, const hg_dyn_eval *ev);

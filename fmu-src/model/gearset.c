@@ -175,6 +175,36 @@ static int check_block(const char *path, const char *where, const hg_flank_serie
     return 0;
 }
 
+/* The levels of a layered flank are the static points of the mesh's force law (model/mesh_law.h):
+ * their loads W_l = T_l / mean R_p,l and deflections W_l / k_m,l must both grow with the level. */
+static int check_deflections(const char *path, const hg_gearset *g, int fl, char *err,
+                             size_t errlen)
+{
+    int j, lv;
+    for (j = 0; j < CHECK_POINTS / 3; j++) {
+        double theta = TWO_PI * 3 * j / CHECK_POINTS, W_lo = 0.0, a_lo = 0.0;
+        hg_harmonics h;
+        hg_harmonics_eval(theta, HG_MAX_HARMONICS, &h);
+        for (lv = 0; lv < g->n_levels; lv++) {
+            const hg_series *y = g->s[fl][lv].y;
+            double W = g->T_level[lv] / y[HG_S_R_P].mean;
+            double a = W / hg_series_value(&y[HG_S_K_M], &h);
+            if (lv > 0 && !(W > W_lo && a > a_lo)) {
+                hg_errorf(err, errlen,
+                          "%s: series %s.%d.k_m: at mesh angle %.3f rad the %g N m level deflects "
+                          "%g um under %g N, the %g N m level %g um under %g N: load and "
+                          "deflection W/k_m must grow with the level",
+                          path, FLANK_NAMES[fl], lv + 1, theta, g->T_level[lv], a * 1e6, W,
+                          g->T_level[lv - 1], a_lo * 1e6, W_lo);
+                return -1;
+            }
+            W_lo = W;
+            a_lo = a;
+        }
+    }
+    return 0;
+}
+
 static int check_gearset(const char *path, const hg_gearset *g, char *err, size_t errlen)
 {
     int fl, lv;
@@ -186,6 +216,8 @@ static int check_gearset(const char *path, const hg_gearset *g, char *err, size_
                          g->T_level[lv]);
             if (check_block(path, where, &g->s[fl][lv], err, errlen)) return -1;
         }
+    for (fl = 0; fl < g->n_flanks && g->n_levels > 1; fl++)
+        if (check_deflections(path, g, fl, err, errlen)) return -1;
     return 0;
 }
 

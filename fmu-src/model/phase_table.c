@@ -128,6 +128,17 @@ void hg_phase_table_mesh(const hg_phase_tables *ts, const hg_level_pick *b, cons
     out->R_p = blend(out->R_p, hi.R_p, b->w); /* e_0: one series for every flank and level */
 }
 
+void hg_phase_table_stiffness(const hg_phase_tables *ts, int data_flank, const hg_pt_cell *c,
+                              double k[], double dk[])
+{
+    int l, i0 = c->i % HG_PT_N_MESH, i1 = (c->i + 1) % HG_PT_N_MESH;
+    for (l = 0; l < ts->n_levels; l++) {
+        const hg_phase_table *t = &ts->t[data_flank * ts->n_levels + l];
+        k[l] = value(c, t->mesh[i0][HG_PT_K_M], t->mesh[i1][HG_PT_K_M]);
+        dk[l] = slope(c, t->mesh[i0][HG_PT_K_M], t->mesh[i1][HG_PT_K_M]);
+    }
+}
+
 /* The pairs' values of one table, the load shares before clamping. */
 static void pairs_one(const hg_phase_table *t, const hg_pt_cell *c, int with_contact,
                       hg_pair_geometry *out)

@@ -62,4 +62,9 @@ void hg_phase_table_mesh(const hg_phase_tables *ts, const hg_level_pick *b, cons
 void hg_phase_table_pairs(const hg_phase_tables *ts, const hg_level_pick *b, const hg_pt_cell *c,
                           int with_contact, hg_pair_geometry *out);
 
+/* k_m [N/m] and dk_m/dtheta [N/m/rad] of every level of the data's flank (hg_level_pick.flank)
+ * at the cell of theta, for the force law of a layered file (model/mesh_law.h). */
+void hg_phase_table_stiffness(const hg_phase_tables *ts, int data_flank, const hg_pt_cell *c,
+                              double k[], double dk[]);
+
 #endif

@@ -272,6 +272,9 @@ static void dynamics_params(hg_setup *s, const hg_vars *v)
                           : 0.0;
     hg_gearset_means(&s->gear, v->T_s < 0.0 ? HG_FLANK_COAST : HG_FLANK_DRIVE, fabs(v->T_s),
                      &p->k_m0, &p->R_p0);
+    if (s->gear.n_levels > 1) /* the stiffness a vibration about the start sees: the law's tangent */
+        p->k_m0 = hg_mesh_law_tangent_mean(&s->gear, v->T_s < 0.0 ? HG_FLANK_COAST : HG_FLANK_DRIVE,
+                                           fabs(v->T_s));
     p->ratio = (double)s->gear.N_g / s->gear.N_p;
     p->gear = &s->gear;
     p->phase = &s->phase;

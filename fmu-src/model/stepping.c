@@ -16,16 +16,18 @@
 
 #define START_PASSES 4 /* fixed-point passes of the start's load on its own friction */
 
-/* Spring states carrying the mesh force W_t: the mesh deflected by W_t / k_m beyond the backlash
+/* Spring states carrying the mesh force W_t: the mesh deflected by W_t / k_m (by the inverse of
+ * a layered file's force law) beyond the backlash
  * on the loaded flank, the output shaft by what the gear passes on (R_g W_t plus the gear's loss
  * torques T_g); under load_mode = speed the governor's integral holds the torque that differs
  * from T_s i, so that T_w balances the output shaft. */
 static void set_springs(double *y, const hg_dyn_params *p, const hg_vars *v,
-                        const hg_mesh_point *mesh, double W_t, double T_g)
+                        const hg_mesh_point *mesh, const hg_mesh_law *law, double W_t, double T_g)
 {
     double T_2 = W_t * mesh->R_p * p->ratio + T_g;
+    double a = law ? copysign(hg_mesh_law_approach(law, fabs(W_t)), W_t) : W_t / mesh->k_m;
     if (p->mesh != HG_MESH_MODEL_RIGID)
-        y[HG_Y_X] = W_t / mesh->k_m + (W_t > 0 ? p->backlash.b : W_t < 0 ? -p->backlash.b : 0.0);
+        y[HG_Y_X] = a + (W_t > 0 ? p->backlash.b : W_t < 0 ? -p->backlash.b : 0.0);
     if (p->speed_governor) {
         y[HG_Y_TWIST2] = T_2 / v->k_t2;
         y[HG_Y_GOV] = p->K_i > 0.0 ? (T_2 - v->T_s * p->ratio) / p->K_i : 0.0;
@@ -43,16 +45,17 @@ void hg_stepping_start(hg_runtime *rt, const hg_setup *s, const hg_vars *v, doub
 {
     const hg_dyn_params *p = &s->p;
     hg_mesh_point mesh;
+    hg_mesh_law law;
     hg_dyn_eval ev;
     double *y = rt->y, W_t, T_g = 0.0;
-    int k;
+    int k, flank = v->T_s < 0.0 ? HG_FLANK_COAST : HG_FLANK_DRIVE;
     memset(rt, 0, sizeof *rt);
     rt->t = rt->t_u0 = t0;
     hg_vars_inputs(v, &rt->u0);
     rt->u_end = rt->u0;
+    if (hg_dyn_loaded_law(p)) hg_mesh_law_of_series(&s->gear, flank, 0.0, &law);
     if (p->mesh == HG_MESH_MODEL_VARYING)
-        hg_gearset_mesh(&s->gear, v->T_s < 0.0 ? HG_FLANK_COAST : HG_FLANK_DRIVE, fabs(v->T_s),
-                        0.0, &mesh);
+        hg_gearset_mesh(&s->gear, flank, fabs(v->T_s), 0.0, &mesh);
     else {
         mesh.k_m = p->k_m0;
         mesh.R_p = p->R_p0;
@@ -65,7 +68,7 @@ void hg_stepping_start(hg_runtime *rt, const hg_setup *s, const hg_vars *v, doub
     for (k = 0; k < HG_MAX_PAIRS; k++) rt->T_c_warm[k] = -1.0;
     W_t = v->T_s / mesh.R_p;
     for (k = 0; k <= START_PASSES; k++) {
-        set_springs(y, p, v, &mesh, W_t, T_g);
+        set_springs(y, p, v, &mesh, hg_dyn_loaded_law(p) ? &law : NULL, W_t, T_g);
         rt->mode = hg_backlash_mode(y[HG_Y_X], p->backlash.b);
         if (k == START_PASSES) break;
         hg_dyn_evaluate(p, &rt->u0, rt->mode, y, 0, rt->T_c_warm, &ev);

@@ -1,0 +1,55 @@
+/* The force law of a loaded mesh (docs/physics.md §10.8, "In the FMU"): the normal spring force
+ * W(a) at an approach a of the teeth beyond first touch, instantaneous, through the static
+ * points of the gear set's torque levels. Level l carries W_l at a_l = W_l / k_m,l(theta) (its
+ * secant stiffness); between two levels the law is the power law through both points,
+ *   W = W_l (a / a_l)^p_l,   p_l = ln(W_l+1 / W_l) / ln(a_l+1 / a_l),
+ * the first one continued down to a = 0 and the last point's tangent beyond the last level. So
+ * the static deflection at every level is the data's, and the stiffness a vibration sees is the
+ * law's tangent dW/da = p W / a, the contact's own tangent stiffness (within 1 % at 100 N m for
+ * the loaded surrogate; tools/mesh_law_reference.py). The law's energy and its change with the
+ * mesh angle at fixed a keep the energy audit closed. Pure functions. */
+#ifndef HG_MESH_LAW_H
+#define HG_MESH_LAW_H
+
+#include "model/gearset.h"
+
+/* The levels' static points at one mesh angle theta. */
+typedef struct {
+    int n;                   /* levels, >= 2 */
+    double W[HG_MAX_LEVELS];  /* normal load of each level, increasing [N] */
+    double a[HG_MAX_LEVELS];  /* its approach W_l / k_m,l(theta), increasing [m] */
+    double da[HG_MAX_LEVELS]; /* da_l/dtheta [m/rad] */
+} hg_mesh_law;
+
+/* The points from the levels' loads W[l] [N] and their stiffness k[l] [N/m] and dk/dtheta
+ * dk[l] [N/m/rad] at theta. */
+void hg_mesh_law_points(int n, const double W[], const double k[], const double dk[],
+                        hg_mesh_law *law);
+
+typedef struct {
+    double W;  /* spring force [N] */
+    double k;  /* its tangent dW/da [N/m] */
+    double U;  /* elastic energy, the integral of W from 0 to a [J] */
+    double dU; /* dU/dtheta at fixed a [J/rad] */
+} hg_law_force;
+
+/* The law at approach a [m]; all zero for a <= 0 (the teeth apart). */
+void hg_mesh_law_force(const hg_mesh_law *law, double a, hg_law_force *out);
+
+/* The approach [m] at which the law carries the load W >= 0 [N] (the law's inverse). */
+double hg_mesh_law_approach(const hg_mesh_law *law, double W);
+
+/* The gear set's levels on the data's flank (hg_level_pick.flank): the normal load of each, its
+ * pinion torque over its mean contact radius [N], the load the model transmits at that torque. */
+void hg_mesh_law_loads(const hg_gearset *g, int data_flank, double W[]);
+
+/* The law of `flank` (as for hg_gearset_level_at) at theta from the series (hg_gearset_mesh's
+ * alternative for a layered file). */
+void hg_mesh_law_of_series(const hg_gearset *g, int flank, double theta, hg_mesh_law *law);
+
+/* Mean over a mesh cycle of the law's tangent at the static load of pinion torque T [N m] on
+ * `flank` [N/m]: the stiffness of the linearised mesh (modal analysis, docs/physics.md §8.4); below
+ * the first level at the first level's load (the tangent of a contact vanishes with its load). */
+double hg_mesh_law_tangent_mean(const hg_gearset *g, int flank, double T);
+
+#endif
