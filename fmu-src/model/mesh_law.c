@@ -111,6 +111,8 @@ void hg_mesh_law_of_series(const hg_gearset *g, int flank, double theta, hg_mesh
 }
 
 #define TANGENT_ANGLES 256 /* mesh angles of the cycle averaged over */
+#define NODE_SIDE 1e-9     /* relative load step to either side: at a level's load the law has a
+                              kink, and the mean of its slopes is the vibration's stiffness */
 
 double hg_mesh_law_tangent_mean(const hg_gearset *g, int flank, double T)
 {
@@ -122,9 +124,12 @@ double hg_mesh_law_tangent_mean(const hg_gearset *g, int flank, double T)
     for (j = 0; j < TANGENT_ANGLES; j++) {
         hg_mesh_law law;
         hg_law_force f;
+        int side;
         hg_mesh_law_of_series(g, flank, 6.283185307179586 * j / TANGENT_ANGLES, &law);
-        hg_mesh_law_force(&law, hg_mesh_law_approach(&law, W), &f);
-        sum += f.k;
+        for (side = -1; side <= 1; side += 2) { /* both slopes at a level's own load */
+            hg_mesh_law_force(&law, hg_mesh_law_approach(&law, W * (1.0 + side * NODE_SIDE)), &f);
+            sum += 0.5 * f.k;
+        }
     }
     return sum / TANGENT_ANGLES;
 }

@@ -48,7 +48,8 @@ void hg_mesh_law_loads(const hg_gearset *g, int data_flank, double W[]);
 void hg_mesh_law_of_series(const hg_gearset *g, int flank, double theta, hg_mesh_law *law);
 
 /* Mean over a mesh cycle of the law's tangent at the static load of pinion torque T [N m] on
- * `flank` [N/m]: the stiffness of the linearised mesh (modal analysis, docs/physics.md §8.4); below
+ * `flank` [N/m], at a level's own load the mean of the slopes on either side of its point: the
+ * stiffness of the linearised mesh (modal analysis, docs/physics.md §8.4); below
  * the first level at the first level's load (the tangent of a contact vanishes with its load). */
 double hg_mesh_law_tangent_mean(const hg_gearset *g, int flank, double T);
 

@@ -226,20 +226,35 @@ def test_shipped_loaded_file_runs_from_the_resources_folder(fmu_path):
 BUILTIN = pathlib.Path(__file__).parents[2] / "resources" / "gearsets"
 
 
+def _law_tangent_mean(g, T, flank="drive", n_theta=256):
+    """The mean over a mesh cycle of the tangent dW/da of a layered file's force law at the
+    static load of pinion torque T (docs/physics.md §10.8, "In the FMU"): the levels' points
+    (W_l/k_m,l(θ), W_l), W_l = T_l/mean R_p,l, joined by power laws; the load T over the R_p
+    mean blended linearly at T; at a level's own load the mean of the slopes on either side."""
+    levels = np.array(g.torque_levels)
+    lay = [g.layers[(flank, l + 1)] for l in range(len(levels))]
+    W_l = levels / np.array([s["R_p"].mean for s in lay])
+    W_T = T / np.interp(T, levels, [s["R_p"].mean for s in lay])
+    theta = 2.0 * np.pi * np.arange(n_theta) / n_theta
+    a_l = W_l[:, None] / np.array([s["k_m"](theta) for s in lay])  # (levels, θ)
+    k = []
+    for W in (W_T * (1.0 - 1e-9), W_T * (1.0 + 1e-9)):
+        l = np.clip(np.searchsorted(W_l, W) - 1, 0, len(levels) - 2)  # W in (W_l, W_l+1]
+        p = np.log(W_l[l + 1] / W_l[l]) / np.log(a_l[l + 1] / a_l[l])
+        k.append(p * W / (a_l[l] * (W / W_l[l]) ** (1.0 / p)))
+    return float(np.mean(k))
+
+
 @pytest.mark.parametrize("n", [1, 2, 3])
 def test_tooth_data_picks_the_built_in_file(fmu_path, n):
     """tooth_data = loaded runs built-in gear set n on its shipped loaded file, tooth_data =
     paper on the one-series file, and preset = paper on the one-series file whatever tooth_data
     says: the FMU's mean stiffness k_m0 at the start torque (100 N·m, a level of the loaded
     files; 150 N·m, halfway between two) and its tooth counts are those the Python reader finds
-    in the file."""
+    in the file (for a layered file the mean tangent of its force law, recomputed here)."""
     loaded = read_gearset(SHIPPED / f"gearset{n}.txt")
     paper = read_gearset(BUILTIN / f"gearset{n}.txt")
-    i = loaded.torque_levels.index(100.0)
-    k_100 = loaded.layers[("drive", i + 1)]["k_m"].mean
-    k_150 = np.interp(150.0, loaded.torque_levels,
-                      [loaded.layers[("drive", j + 1)]["k_m"].mean
-                       for j in range(len(loaded.torque_levels))])
+    k_100, k_150 = (_law_tangent_mean(loaded, T) for T in (100.0, 150.0))
     gear = Instance(fmu_path)
     try:
         for params, k_m0 in (({"tooth_data": "loaded"}, k_100),
