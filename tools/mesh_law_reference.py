@@ -108,7 +108,7 @@ class Levels:
     """Per-level series of one flank: from the gear-set file (k_s, R_p, e_0 as the FMU reads
     them) and from the loaded contact (k_t, the tangent's offset Δ) at N_THETA mesh angles."""
 
-    def __init__(self, path, blank_no=1, flank="drive"):
+    def __init__(self, path, blank_no=1, flank="drive", e_0_scale=1.0):
         gs = read_gearset(path)
         theta = 2.0 * math.pi * np.arange(N_THETA) / N_THETA
         self.T = np.array(gs.torque_levels)
@@ -118,7 +118,7 @@ class Levels:
         e0 = gs.series["e_0"]
         i = np.arange(1, len(e0.sin) + 1)
         arg = np.multiply.outer(theta, i)
-        self.de_0 = periodic_table(np.cos(arg) @ (e0.sin * i) - np.sin(arg) @ (e0.cos * i))
+        self.de_0 = e_0_scale * periodic_table(np.cos(arg) @ (e0.sin * i) - np.sin(arg) @ (e0.cos * i))
         fl = tl.LoadedFlank(tl.flank_set(sur.TABLE_1[blank_no], flank))
         self.R_p0 = fl.gs.R_p0
         meshes = [tca.level_mesh(fl, T, N_THETA)[0] for T in self.T]  # the levels' loads
@@ -249,10 +249,11 @@ def main(argv=None):
     p.add_argument("--speeds", type=float, nargs=3, default=(1000.0, 3400.0, 25))
     p.add_argument("--dampers", type=float, nargs=3, default=(3.458, 8519.7, 12.666),
                    help="c_t1 [N m s/rad], c_m [N s/m], c_t2 [N m s/rad]")
+    p.add_argument("--e-0-scale", type=float, default=1.0, help="as the FMU's e_0_scale")
     p.add_argument("--t-end", type=float, default=0.3)
     p.add_argument("--dt", type=float, default=5e-6, help="RK4 step [s]")
     a = p.parse_args(argv)
-    lev = Levels(a.file)
+    lev = Levels(a.file, e_0_scale=a.e_0_scale)
     table = ContactTable() if "reference" in a.law else None
     if a.command == "static":
         th = 2.0 * math.pi * np.arange(64) / 64
