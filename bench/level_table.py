@@ -193,10 +193,7 @@ def bounds_sentence(data):
 def readme_with(text, data):
     from hypoid import docblocks
 
-    new = docblocks.replace(text, BEGIN, END, table(data))
-    if new is None:
-        sys.exit("level_table: the README has no level-table markers")
-    return new
+    return docblocks.replace_required(text, BEGIN, END, table(data), "level_table: the README")
 
 
 def main():

@@ -3,6 +3,7 @@ writes from a recorded data file (README's level table, docs/paper-findings.md, 
 §10.8's km-effect table), and the check that fails when a page is stale."""
 
 import pathlib
+import sys
 
 
 def replace(text, begin, end, body):
@@ -12,6 +13,14 @@ def replace(text, begin, end, body):
     if i < 0 or j < i:
         return None
     return text[:i + len(begin)] + "\n" + body + "\n" + text[j:]
+
+
+def replace_required(text, begin, end, body, where):
+    """`replace`, or exit with a line naming `where` when the markers are missing."""
+    new = replace(text, begin, end, body)
+    if new is None:
+        sys.exit(f"{where} has no generated-block markers ({begin} ... {end})")
+    return new
 
 
 def write_or_check(path, new, check, what, fix):

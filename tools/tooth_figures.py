@@ -157,10 +157,8 @@ def effect_markdown(rows):
 
 
 def physics_with(text, rows):
-    new = docblocks.replace(text, BEGIN, END, effect_markdown(rows))
-    if new is None:
-        sys.exit("tooth_figures: docs/physics.md has no km-effect markers")
-    return new
+    return docblocks.replace_required(text, BEGIN, END, effect_markdown(rows),
+                                      "tooth_figures: docs/physics.md")
 
 
 def main():
