@@ -38,18 +38,13 @@ int hg_dyn_loaded_law(const hg_dyn_params *p)
 
 /* The force law of a layered file at theta on the flank in contact, the levels' stiffness from
  * the tables or the series. */
-static void loaded_law(const hg_dyn_params *p, double theta, hg_dyn_eval *ev)
+static void loaded_law(const hg_dyn_params *p, double theta, const hg_dyn_eval *ev,
+                       hg_mesh_law *law)
 {
-    double W[HG_MAX_LEVELS], k[HG_MAX_LEVELS], dk[HG_MAX_LEVELS];
-    hg_level_pick b;
-    if (!p->phase) {
-        hg_mesh_law_of_series(p->gear, ev->flank, theta, &ev->law);
-        return;
-    }
-    hg_gearset_level_at(p->gear, ev->flank, 0.0, &b);
-    hg_phase_table_stiffness(p->phase, b.flank, &ev->cell, k, dk);
-    hg_mesh_law_loads(p->gear, b.flank, W);
-    hg_mesh_law_points(p->gear->n_levels, W, k, dk, &ev->law);
+    if (p->phase)
+        hg_phase_table_law(p->phase, ev->pick.flank, &ev->cell, law);
+    else
+        hg_mesh_law_of_series(p->gear, ev->flank, theta, law);
 }
 
 /* Without backlash (or with a rigid mesh) both flanks touch: the net force loads one of them. */
@@ -62,7 +57,8 @@ static void net_force_loads(hg_dyn_eval *ev)
 /* Contact loads of the flanks. With backlash each flank carries its spring share and the damper
  * acts through its engagement (a damper between separated teeth does not act); a flank in contact
  * whose force turns tensile (teeth parting faster than the damper allows) carries no load. */
-static void flank_loads(const hg_dyn_params *p, int mode, double x, hg_dyn_eval *ev)
+static void flank_loads(const hg_dyn_params *p, int mode, double x, const hg_mesh_law *law,
+                        hg_dyn_eval *ev)
 {
     hg_flank_split fl;
     double W_d, W_b;
@@ -76,8 +72,8 @@ static void flank_loads(const hg_dyn_params *p, int mode, double x, hg_dyn_eval 
     if (hg_dyn_loaded_law(p)) {
         /* the law's force through the engagement: the force of the energy U(f_d) + U(-f_b) */
         hg_law_force F_d, F_b;
-        hg_mesh_law_force(&ev->law, fl.f_d, &F_d);
-        hg_mesh_law_force(&ev->law, -fl.f_b, &F_b);
+        hg_mesh_law_force(law, fl.f_d, &F_d);
+        hg_mesh_law_force(law, -fl.f_b, &F_b);
         W_d = F_d.W * fl.g_d + p->c_m * fl.g_d * ev->xdot;
         W_b = -F_b.W * fl.g_b + p->c_m * fl.g_b * ev->xdot;
         ev->U_mesh = F_d.U + F_b.U;
@@ -96,21 +92,22 @@ static void flank_loads(const hg_dyn_params *p, int mode, double x, hg_dyn_eval 
 static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn_eval *ev)
 {
     double w_p = y[HG_Y_W_P], theta = p->gear->N_p * y[HG_Y_PHI_P];
+    hg_mesh_law law;
     if (p->mesh == HG_MESH_MODEL_VARYING) {
         ev->flank = active_flank(p, mode, y[HG_Y_X]);
+        hg_gearset_level_at(p->gear, ev->flank, y[HG_Y_T_KM], &ev->pick);
         if (p->phase) { /* tabulated */
-            hg_level_pick b;
-            hg_gearset_level_at(p->gear, ev->flank, y[HG_Y_T_KM], &b);
             hg_phase_table_locate(theta, &ev->cell);
             ev->located = 1;
-            hg_phase_table_mesh(p->phase, &b, &ev->cell, &ev->mesh);
+            hg_phase_table_mesh(p->phase, &ev->pick, &ev->cell, &ev->mesh);
         } else {
             hg_gearset_mesh(p->gear, ev->flank, y[HG_Y_T_KM], theta, &ev->mesh);
         }
-        if (hg_dyn_loaded_law(p)) loaded_law(p, theta, ev);
+        if (hg_dyn_loaded_law(p)) loaded_law(p, theta, ev, &law);
         ev->f = hg_backlash_f(&p->backlash, y[HG_Y_X], mode);
         ev->Phi = hg_backlash_potential(&p->backlash, y[HG_Y_X], mode);
     } else {
+        hg_gearset_level_at(p->gear, ev->flank, y[HG_Y_T_KM], &ev->pick);
         memset(&ev->mesh, 0, sizeof ev->mesh);
         ev->mesh.k_m = p->k_m0;
         ev->mesh.R_p = p->R_p0;
@@ -121,7 +118,7 @@ static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn
     if (p->mesh == HG_MESH_MODEL_RIGID) return;
     /* eq. 25: x' = R_p w_p - R_g w_g - e_0', e_0' = (de_0/dtheta) N_p w_p */
     ev->xdot = ev->mesh.R_p * w_p - ev->R_g * y[HG_Y_W_G] - ev->mesh.de_0 * p->gear->N_p * w_p;
-    flank_loads(p, mode, y[HG_Y_X], ev);
+    flank_loads(p, mode, y[HG_Y_X], &law, ev);
 }
 
 /* The friction tables of the two levels b picks (built now if they are not), whether both are
@@ -146,21 +143,20 @@ static void pair_forces(const hg_dyn_params *p, const double *y, int with_contac
     double w_p = y[HG_Y_W_P], w_g = y[HG_Y_W_G], W = ev->W_drive + ev->W_coast;
     double theta = p->gear->N_p * y[HG_Y_PHI_P], F[HG_MAX_PAIRS];
     const hg_friction_table *lo = NULL, *hi = NULL;
-    hg_level_pick b;
+    const hg_level_pick *b = &ev->pick;
     int k, tabulated;
-    hg_gearset_level_at(p->gear, ev->flank, y[HG_Y_T_KM], &b);
-    tabulated = p->tables && !all_pairs && with_contact && friction_tables(p, &b, &lo, &hi);
+    tabulated = p->tables && !all_pairs && with_contact && friction_tables(p, b, &lo, &hi);
     if (p->phase && with_contact && !all_pairs) { /* the right-hand side: the tables */
         if (!ev->located) hg_phase_table_locate(theta, &ev->cell);
         ev->located = 1;
-        hg_phase_table_pairs(p->phase, &b, &ev->cell, !tabulated, geo);
+        hg_phase_table_pairs(p->phase, b, &ev->cell, !tabulated, geo);
     } else {
         hg_gearset_pairs(p->gear, ev->flank, y[HG_Y_T_KM], theta, with_contact, geo);
     }
     for (k = 0; k < HG_MAX_PAIRS; k++) ev->W_pair[k] = geo->ls[k] * W;
     if (!with_contact) return;
     if (tabulated) {
-        hg_friction_table_pairs_blend(lo, hi, b.w, theta, ev->W_pair, w_p, w_g, ev->T_oil, F);
+        hg_friction_table_pairs_blend(lo, hi, b->w, theta, ev->W_pair, w_p, w_g, ev->T_oil, F);
         for (k = 0; k < HG_MAX_PAIRS; k++) ev->pair[k].F_f = F[k];
         return;
     }

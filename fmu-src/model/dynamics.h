@@ -87,10 +87,9 @@ typedef struct {
     double T_km_dot;   /* dT_km/dt [N m/s] */
     double U_mesh;     /* elastic energy of the mesh of a layered file's force law [J] */
     double dU_mesh;    /* its dU/dtheta at fixed x [J/rad] (the law's parametric excitation) */
-    hg_mesh_law law;   /* a layered file's force law at theta on the flank in contact
-                          (model/mesh_law.h); unused for one level, whose law is k_m f */
     int flank;         /* HG_FLANK_DRIVE or _COAST: whose tooth data apply (the drive flank's
                           off the varying mesh) */
+    hg_level_pick pick; /* the levels around the filtered torque T_km on that flank */
     double W_pair[HG_MAX_PAIRS];
     hg_pair_friction pair[HG_MAX_PAIRS];
     int located;      /* cell holds the mesh angle's cell of the phase table */

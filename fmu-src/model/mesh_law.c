@@ -4,99 +4,121 @@
 #include <math.h>
 #include <string.h>
 
-void hg_mesh_law_points(int n, const double W[], const double k[], const double dk[],
-                        hg_mesh_law *law)
+void hg_mesh_law_levels(int n, const double W[], hg_law_levels *lv)
 {
     int l;
-    law->n = n;
+    lv->n = n;
     for (l = 0; l < n; l++) {
-        law->W[l] = W[l];
-        law->a[l] = W[l] / k[l];
-        law->da[l] = -law->a[l] * dk[l] / k[l];
+        lv->W[l] = W[l];
+        lv->per_W[l] = 1.0 / W[l];
+        if (l + 1 < n) lv->ln_W[l] = log(W[l + 1] / W[l]);
     }
 }
 
-/* Segment l between points l and l + 1: the exponent p and dp/dtheta. */
+void hg_mesh_law_points(const hg_law_levels *lv, const double k[], const double dk[],
+                        hg_mesh_law *law)
+{
+    int l;
+    law->lv = *lv;
+    for (l = 0; l < lv->n; l++) { /* independent divisions: they overlap */
+        double per_k = 1.0 / k[l];
+        law->a[l] = lv->W[l] * per_k;
+        law->per_a[l] = k[l] * lv->per_W[l];
+        law->r[l] = -dk[l] * per_k;
+    }
+}
+
+/* Segment l between points l and l + 1: the exponent p = ln(W_l+1/W_l) / ln(a_l+1/a_l), 1/(p + 1)
+ * and dp/dtheta, from one division. */
 typedef struct {
-    double p, dp;
+    double p, q, dp;
 } hg_segment;
 
 static hg_segment segment(const hg_mesh_law *m, int l)
 {
     hg_segment s;
-    double log_a = log(m->a[l + 1] / m->a[l]);
-    s.p = log(m->W[l + 1] / m->W[l]) / log_a;
-    s.dp = -s.p * (m->da[l + 1] / m->a[l + 1] - m->da[l] / m->a[l]) / log_a;
+    double ln_a = log(m->a[l + 1] * m->per_a[l]), ln_W = m->lv.ln_W[l], sum = ln_W + ln_a;
+    double d = 1.0 / (ln_a * sum); /* 1/ln_a = sum d, 1/(p + 1) = ln_a/sum = ln_a^2 d */
+    s.p = ln_W * sum * d;
+    s.q = ln_a * ln_a * d;
+    s.dp = s.p * (m->r[l] - m->r[l + 1]) * sum * d;
     return s;
 }
 
-/* Energy and its dtheta of the power law of segment s from the point l to where it carries
- * W at a with dW/dtheta = dW (the integral (W a - W_l a_l) / (p + 1) and its derivative). */
-static void segment_energy(const hg_mesh_law *m, int l, hg_segment s, double W, double dW,
-                           double a, double da, double *U, double *dU)
+/* W_l a_l of point l [J]. */
+static double point_Wa(const hg_mesh_law *m, int l) { return m->lv.W[l] * m->a[l]; }
+
+/* Adds the energy and its dtheta of the power law of segment s from its start (the point l, or
+ * a = 0 for the first) to where it carries W at a, W a changing with theta by dWa: the integral
+ * (W a - W_l a_l) / (p + 1) and its derivative. */
+static void segment_energy(const hg_mesh_law *m, int l, hg_segment s, double Wa, double dWa,
+                           double *U, double *dU)
 {
-    double q = 1.0 / (s.p + 1.0), E = W * a - m->W[l] * m->a[l];
-    *U += E * q;
-    *dU += (dW * a + W * da - m->W[l] * m->da[l]) * q - E * s.dp * q * q;
+    double P_l = l > 0 ? point_Wa(m, l) : 0.0, E = Wa - P_l;
+    *U += E * s.q;
+    *dU += (dWa - P_l * m->r[l]) * s.q - E * s.dp * s.q * s.q;
 }
 
 void hg_mesh_law_force(const hg_mesh_law *m, double a, hg_law_force *out)
 {
-    int l = 0, last = m->n - 2;
+    int l = 0, last = m->lv.n - 2;
     hg_segment s;
-    double U, dU, L, dlnW;
+    double U = 0.0, dU = 0.0, L, dlnW, P;
     memset(out, 0, sizeof *out);
     if (!(a > 0.0)) return;
     s = segment(m, 0);
-    /* the energy at the first point, of the first law from a = 0 */
-    U = m->W[0] * m->a[0] / (s.p + 1.0);
-    dU = (m->W[0] * m->da[0]) / (s.p + 1.0) - m->W[0] * m->a[0] * s.dp / ((s.p + 1.0) * (s.p + 1.0));
     while (l < last && a > m->a[l + 1]) { /* whole segments below a */
-        segment_energy(m, l, s, m->W[l + 1], 0.0, m->a[l + 1], m->da[l + 1], &U, &dU);
+        P = point_Wa(m, l + 1);
+        segment_energy(m, l, s, P, P * m->r[l + 1], &U, &dU);
         s = segment(m, ++l);
     }
     if (a > m->a[last + 1]) { /* beyond the last level: its tangent */
-        double k_e = s.p * m->W[last + 1] / m->a[last + 1], dk_e, d = a - m->a[last + 1];
-        dk_e = k_e * (s.dp / s.p - m->da[last + 1] / m->a[last + 1]);
-        segment_energy(m, l, s, m->W[last + 1], 0.0, m->a[last + 1], m->da[last + 1], &U, &dU);
-        out->W = m->W[last + 1] + k_e * d;
+        double W_e = m->lv.W[last + 1], a_e = m->a[last + 1], da_e = a_e * m->r[last + 1];
+        double k_e = s.p * W_e * m->per_a[last + 1], d = a - a_e;
+        double dk_e = k_e * (s.dp / s.p - m->r[last + 1]);
+        P = point_Wa(m, last + 1);
+        segment_energy(m, l, s, P, P * m->r[last + 1], &U, &dU);
+        out->W = W_e + k_e * d;
         out->k = k_e;
-        out->U = U + m->W[last + 1] * d + 0.5 * k_e * d * d;
-        out->dU = dU - m->W[last + 1] * m->da[last + 1] + 0.5 * dk_e * d * d -
-                  k_e * d * m->da[last + 1];
+        out->U = U + W_e * d + 0.5 * k_e * d * d;
+        out->dU = dU - W_e * da_e + 0.5 * dk_e * d * d - k_e * d * da_e;
         return;
     }
-    L = log(a / m->a[l]);
-    out->W = m->W[l] * exp(s.p * L);
+    L = log(a * m->per_a[l]);
+    out->W = m->lv.W[l] * exp(s.p * L);
     out->k = s.p * out->W / a;
-    dlnW = s.dp * L - s.p * m->da[l] / m->a[l];
-    segment_energy(m, l, s, out->W, out->W * dlnW, a, 0.0, &U, &dU);
+    dlnW = s.dp * L - s.p * m->r[l];
+    segment_energy(m, l, s, out->W * a, out->W * dlnW * a, &U, &dU);
     out->U = U;
     out->dU = dU;
 }
 
 double hg_mesh_law_approach(const hg_mesh_law *m, double W)
 {
-    int l = 0, last = m->n - 2;
+    int l = 0, last = m->lv.n - 2;
     hg_segment s;
     if (!(W > 0.0)) return 0.0;
-    while (l < last && W > m->W[l + 1]) l++;
+    while (l < last && W > m->lv.W[l + 1]) l++;
     s = segment(m, l);
-    if (W > m->W[last + 1]) /* beyond the last level */
-        return m->a[last + 1] + (W - m->W[last + 1]) * m->a[last + 1] / (s.p * m->W[last + 1]);
-    return m->a[l] * exp(log(W / m->W[l]) / s.p);
+    if (W > m->lv.W[last + 1]) /* beyond the last level */
+        return m->a[last + 1] +
+               (W - m->lv.W[last + 1]) / (s.p * m->lv.W[last + 1] * m->per_a[last + 1]);
+    return m->a[l] * exp(log(W * m->lv.per_W[l]) / s.p);
 }
 
-void hg_mesh_law_loads(const hg_gearset *g, int data_flank, double W[])
+void hg_mesh_law_levels_of(const hg_gearset *g, int data_flank, hg_law_levels *lv)
 {
+    double W[HG_MAX_LEVELS];
     int l;
     for (l = 0; l < g->n_levels; l++)
         W[l] = g->T_level[l] / g->s[data_flank][l].y[HG_S_R_P].mean;
+    hg_mesh_law_levels(g->n_levels, W, lv);
 }
 
 void hg_mesh_law_of_series(const hg_gearset *g, int flank, double theta, hg_mesh_law *law)
 {
-    double W[HG_MAX_LEVELS], k[HG_MAX_LEVELS], dk[HG_MAX_LEVELS];
+    double k[HG_MAX_LEVELS], dk[HG_MAX_LEVELS];
+    hg_law_levels lv;
     hg_level_pick b;
     hg_harmonics h;
     int l;
@@ -106,8 +128,8 @@ void hg_mesh_law_of_series(const hg_gearset *g, int flank, double theta, hg_mesh
         k[l] = hg_series_value(&g->s[b.flank][l].y[HG_S_K_M], &h);
         dk[l] = hg_series_slope(&g->s[b.flank][l].y[HG_S_K_M], &h);
     }
-    hg_mesh_law_loads(g, b.flank, W);
-    hg_mesh_law_points(g->n_levels, W, k, dk, law);
+    hg_mesh_law_levels_of(g, b.flank, &lv);
+    hg_mesh_law_points(&lv, k, dk, law);
 }
 
 #define TANGENT_ANGLES 256 /* mesh angles of the cycle averaged over */

@@ -13,17 +13,29 @@
 
 #include "model/gearset.h"
 
+/* What of the law is constant for a run: the levels' loads and the logarithms of their ratios
+ * (the exponents' numerators), computed once per gear set (hg_mesh_law_levels_of). */
+typedef struct {
+    int n;                          /* levels, >= 2 */
+    double W[HG_MAX_LEVELS];        /* normal load of each level, increasing [N] */
+    double per_W[HG_MAX_LEVELS];    /* 1 / W_l [1/N] */
+    double ln_W[HG_MAX_LEVELS - 1]; /* ln(W_l+1 / W_l) */
+} hg_law_levels;
+
+/* The levels from their loads W[l] [N]. */
+void hg_mesh_law_levels(int n, const double W[], hg_law_levels *lv);
+
 /* The levels' static points at one mesh angle theta. */
 typedef struct {
-    int n;                   /* levels, >= 2 */
-    double W[HG_MAX_LEVELS];  /* normal load of each level, increasing [N] */
-    double a[HG_MAX_LEVELS];  /* its approach W_l / k_m,l(theta), increasing [m] */
-    double da[HG_MAX_LEVELS]; /* da_l/dtheta [m/rad] */
+    hg_law_levels lv;
+    double a[HG_MAX_LEVELS];      /* approach W_l / k_m,l(theta), increasing [m] */
+    double per_a[HG_MAX_LEVELS];  /* 1 / a_l [1/m] */
+    double r[HG_MAX_LEVELS];      /* (da_l/dtheta) / a_l = -(dk_m,l/dtheta) / k_m,l [1/rad] */
 } hg_mesh_law;
 
-/* The points from the levels' loads W[l] [N] and their stiffness k[l] [N/m] and dk/dtheta
- * dk[l] [N/m/rad] at theta. */
-void hg_mesh_law_points(int n, const double W[], const double k[], const double dk[],
+/* The points from the levels lv and their stiffness k[l] [N/m] and dk/dtheta dk[l] [N/m/rad] at
+ * theta. */
+void hg_mesh_law_points(const hg_law_levels *lv, const double k[], const double dk[],
                         hg_mesh_law *law);
 
 typedef struct {
@@ -41,7 +53,7 @@ double hg_mesh_law_approach(const hg_mesh_law *law, double W);
 
 /* The gear set's levels on the data's flank (hg_level_pick.flank): the normal load of each, its
  * pinion torque over its mean contact radius [N], the load the model transmits at that torque. */
-void hg_mesh_law_loads(const hg_gearset *g, int data_flank, double W[]);
+void hg_mesh_law_levels_of(const hg_gearset *g, int data_flank, hg_law_levels *lv);
 
 /* The law of `flank` (as for hg_gearset_level_at) at theta from the series (hg_gearset_mesh's
  * alternative for a layered file). */

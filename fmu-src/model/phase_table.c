@@ -58,6 +58,8 @@ int hg_phase_tables_build(hg_phase_tables *ts, const hg_gearset *g)
     for (fl = 0; fl < g->n_flanks; fl++)
         for (lv = 0; lv < g->n_levels; lv++)
             build_one(&ts->t[fl * g->n_levels + lv], g, &g->s[fl][lv]);
+    for (fl = 0; fl < g->n_flanks && g->n_levels > 1; fl++)
+        hg_mesh_law_levels_of(g, fl, &ts->law[fl]);
     return 0;
 }
 
@@ -128,15 +130,17 @@ void hg_phase_table_mesh(const hg_phase_tables *ts, const hg_level_pick *b, cons
     out->R_p = blend(out->R_p, hi.R_p, b->w); /* e_0: one series for every flank and level */
 }
 
-void hg_phase_table_stiffness(const hg_phase_tables *ts, int data_flank, const hg_pt_cell *c,
-                              double k[], double dk[])
+void hg_phase_table_law(const hg_phase_tables *ts, int data_flank, const hg_pt_cell *c,
+                        hg_mesh_law *law)
 {
+    double k[HG_MAX_LEVELS], dk[HG_MAX_LEVELS];
     int l, i0 = c->i % HG_PT_N_MESH, i1 = (c->i + 1) % HG_PT_N_MESH;
     for (l = 0; l < ts->n_levels; l++) {
         const hg_phase_table *t = &ts->t[data_flank * ts->n_levels + l];
         k[l] = value(c, t->mesh[i0][HG_PT_K_M], t->mesh[i1][HG_PT_K_M]);
         dk[l] = slope(c, t->mesh[i0][HG_PT_K_M], t->mesh[i1][HG_PT_K_M]);
     }
+    hg_mesh_law_points(&ts->law[data_flank], k, dk, law);
 }
 
 /* The pairs' values of one table, the load shares before clamping. */

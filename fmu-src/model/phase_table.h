@@ -12,6 +12,7 @@
 #define HG_PHASE_TABLE_H
 
 #include "model/gearset.h"
+#include "model/mesh_law.h"
 
 #define HG_PT_N_MESH 256 /* nodes over one mesh cycle (theta) */
 /* Nodes over one load-share period (psi = (theta + 2 pi k) / 3): three times the mesh's, so that
@@ -41,10 +42,12 @@ typedef struct {
     double a0, b0, a1, b1, da0, db0, da1, db1;
 } hg_pt_cell;
 
-/* The tables of every flank and torque level of a gear set, t[flank * n_levels + level]. */
+/* The tables of every flank and torque level of a gear set, t[flank * n_levels + level], and for
+ * a layered file the force law's constants of each flank. */
 typedef struct {
     int n_flanks, n_levels;
     hg_phase_table *t;
+    hg_law_levels law[HG_N_FLANKS]; /* n_levels > 1 */
 } hg_phase_tables;
 
 /* Tabulates every series of g (after scaling) into ts, which must be zeroed or built before; -1
@@ -62,9 +65,9 @@ void hg_phase_table_mesh(const hg_phase_tables *ts, const hg_level_pick *b, cons
 void hg_phase_table_pairs(const hg_phase_tables *ts, const hg_level_pick *b, const hg_pt_cell *c,
                           int with_contact, hg_pair_geometry *out);
 
-/* k_m [N/m] and dk_m/dtheta [N/m/rad] of every level of the data's flank (hg_level_pick.flank)
- * at the cell of theta, for the force law of a layered file (model/mesh_law.h). */
-void hg_phase_table_stiffness(const hg_phase_tables *ts, int data_flank, const hg_pt_cell *c,
-                              double k[], double dk[]);
+/* The force law of a layered file (model/mesh_law.h) on the data's flank (hg_level_pick.flank)
+ * at the cell of theta: every level's k_m and dk_m/dtheta from its table. */
+void hg_phase_table_law(const hg_phase_tables *ts, int data_flank, const hg_pt_cell *c,
+                        hg_mesh_law *law);
 
 #endif

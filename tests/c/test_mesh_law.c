@@ -1,7 +1,7 @@
 /* The force law of a loaded mesh (model/mesh_law.h): levels on one power law W = C a^p give it
  * back exactly (force, tangent p W/a, energy C a^(p+1)/(p+1)); the energy's derivatives by
  * central differences (dU/da = W, dW/da = k, dU/dtheta at fixed a with k_m,l varying in theta);
- * the tangent beyond the last level; the inverse. */
+ * the energy against the quadrature of W; the tangent beyond the last level; the inverse. */
 #include <math.h>
 
 #include "check.h"
@@ -15,13 +15,15 @@ static const double W_L[N] = {1190.0, 2380.0, 4760.0, 9520.0, 19040.0}; /* [N] *
 static void law_at(double theta, double C, double p, const double e[N], hg_mesh_law *law)
 {
     double k[N], dk[N];
+    hg_law_levels lv;
     int l;
     for (l = 0; l < N; l++) {
         double k0 = W_L[l] / pow(W_L[l] / C, 1.0 / p);
         k[l] = k0 * (1.0 + e[l] * sin(theta));
         dk[l] = k0 * e[l] * cos(theta);
     }
-    hg_mesh_law_points(N, W_L, k, dk, law);
+    hg_mesh_law_levels(N, W_L, &lv);
+    hg_mesh_law_points(&lv, k, dk, law);
 }
 
 static void one_power_law(void)
@@ -78,6 +80,43 @@ static void derivatives(void)
     }
 }
 
+/* Composite Simpson of the law's W over [lo, hi] in n (even) intervals. */
+static double simpson(const hg_mesh_law *law, double lo, double hi, int n)
+{
+    double h = (hi - lo) / n, sum = 0.0;
+    int i;
+    for (i = 0; i <= n; i++) {
+        hg_law_force f;
+        hg_mesh_law_force(law, lo + i * h, &f);
+        sum += (i == 0 || i == n ? 1.0 : i % 2 ? 4.0 : 2.0) * f.W;
+    }
+    return sum * h / 3.0;
+}
+
+/* U against the quadrature of W from 0 (Simpson piece by piece between the level points, where
+ * W has its kinks): the closed-form energies of the segments below and of the last tangent. */
+static void energy_is_the_integral(void)
+{
+    const double e[N] = {0.30, 0.25, 0.20, 0.12, 0.08}, theta = 2.3;
+    const double a[] = {1e-6, 7e-6, 13e-6, 33e-6, 61e-6, 120e-6};
+    hg_mesh_law law;
+    unsigned i;
+    law_at(theta, C, P, e, &law);
+    for (i = 0; i < sizeof a / sizeof a[0]; i++) {
+        hg_law_force f;
+        double lo = 0.0, U = 0.0;
+        int l;
+        for (l = 0; l <= N && lo < a[i]; l++) {
+            double hi = l < N && law.a[l] < a[i] ? law.a[l] : a[i];
+            U += simpson(&law, lo, hi, 2000);
+            lo = hi;
+        }
+        hg_mesh_law_force(&law, a[i], &f);
+        CHECK_CLOSE(f.U, U, 1e-9, 0.0);
+    }
+    CHECK(a[5] > law.a[N - 1] && a[0] < law.a[0]); /* below the first and beyond the last */
+}
+
 static void ends_and_nodes(void)
 {
     const double e[N] = {0.30, 0.25, 0.20, 0.12, 0.08};
@@ -105,6 +144,7 @@ int main(void)
 {
     one_power_law();
     derivatives();
+    energy_is_the_integral();
     ends_and_nodes();
     CHECK_DONE();
 }

@@ -2,7 +2,8 @@
  * sets 1-3 and the layered two-flank ones, off the nodes, either flank, torques below, between
  * and beyond the levels):
  * values within a small fraction of each series' ripple, the mesh derivatives within a small
- * fraction of theirs, load shares still summing to 1. */
+ * fraction of theirs, load shares still summing to 1; the layered files' force law from the
+ * tables against the law from the series. */
 #include <math.h>
 #include <stdio.h>
 
@@ -31,11 +32,35 @@ static double slope_amplitude(const hg_series *y)
     return a;
 }
 
+/* The force law of a layered file from the tables against the law from the series at theta,
+ * below, at and between the levels' points and beyond the last: the worst differences of W
+ * relative to W and of dU/dtheta relative to U (its scale) into worst[0], worst[1]. */
+static void compare_law(const hg_gearset *g, const hg_phase_tables *ts, int fl, double theta,
+                        const hg_pt_cell *cell, double worst[2])
+{
+    static const double at[] = {0.4, 1.0, 1.3};
+    hg_mesh_law lt, ls;
+    hg_level_pick b;
+    int l, i;
+    hg_gearset_level_at(g, fl, 0.0, &b);
+    hg_phase_table_law(ts, b.flank, cell, &lt);
+    hg_mesh_law_of_series(g, fl, theta, &ls);
+    for (l = 0; l < g->n_levels; l++)
+        for (i = 0; i < 3; i++) {
+            hg_law_force t, s;
+            hg_mesh_law_force(&lt, at[i] * ls.a[l], &t);
+            hg_mesh_law_force(&ls, at[i] * ls.a[l], &s);
+            worst[0] = fmax(worst[0], fabs(t.W - s.W) / s.W);
+            worst[1] = fmax(worst[1], fabs(t.dU - s.dU) / s.U);
+        }
+}
+
 /* The tables against the direct blend of the series (hg_gearset_mesh, hg_gearset_pairs) on
  * flank fl at pinion torque T, off the nodes; the worst differences relative to the ripple of the
- * lower level's series, returned in worst[3] (mesh values, mesh slopes, pair data). */
+ * lower level's series, returned in worst[0 ... 2] (mesh values, mesh slopes, pair data), for
+ * a layered file the force law's in worst[3], worst[4] (compare_law). */
 static void compare_at(const hg_gearset *g, const hg_phase_tables *ts, int fl, double T,
-                       double worst[3])
+                       double worst[5])
 {
     hg_level_pick b;
     const hg_series *y;
@@ -72,18 +97,20 @@ static void compare_at(const hg_gearset *g, const hg_phase_tables *ts, int fl, d
             worst[2] = fmax(worst[2], fabs(p.vc[k][1] - q.vc[k][1]) / fabs(y[HG_S_VC_Y].mean));
         }
         CHECK_CLOSE(sum, 1.0, 1e-12, 0.0);
+        if (g->n_levels > 1) compare_law(g, ts, fl, theta, &cell, &worst[3]);
     }
 }
 
 /* Every flank at torques below, on, between and above the file's levels; bounds on the worst
  * mesh value, mesh slope and pair datum relative to the ripple. */
-static void compare(const char *path, double bound_v, double bound_d, double bound_pair)
+static void compare(const char *path, double bound_v, double bound_d, double bound_pair,
+                    double bound_W, double bound_dU)
 {
     static hg_gearset g;
     static hg_phase_tables ts;
     static const double T[] = {0.0, 10.0, 25.0, 37.0, 100.0, 141.0, 399.0, 400.0, 650.0};
     char err[HG_ERRLEN] = "";
-    double worst[3] = {0.0, 0.0, 0.0};
+    double worst[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
     int fl, i;
     CHECK(hg_gearset_load(path, &g, err, sizeof err) == 0);
     CHECK(hg_phase_tables_build(&ts, &g) == 0);
@@ -91,20 +118,22 @@ static void compare(const char *path, double bound_v, double bound_d, double bou
     for (fl = 0; fl < HG_N_FLANKS; fl++)
         for (i = 0; i < (int)(sizeof T / sizeof T[0]); i++) compare_at(&g, &ts, fl, T[i], worst);
     printf("%s (%d flank(s), %d level(s)): mesh values %.1e, mesh slopes %.1e, pair data %.1e of "
-           "the ripple\n", path, g.n_flanks, g.n_levels, worst[0], worst[1], worst[2]);
+           "the ripple; law: W %.1e of W, dU/dtheta %.1e of U\n", path, g.n_flanks, g.n_levels,
+           worst[0], worst[1], worst[2], worst[3], worst[4]);
     CHECK(worst[0] < bound_v && worst[1] < bound_d && worst[2] < bound_pair);
+    CHECK(worst[3] <= bound_W && worst[4] <= bound_dU);
     hg_phase_tables_free(&ts);
 }
 
 int main(void)
 {
-    compare("resources/gearsets/gearset1.txt", 1e-6, 1e-4, 2e-6);
-    compare("resources/gearsets/gearset2.txt", 1e-6, 1e-4, 2e-6);
-    compare("resources/gearsets/gearset3.txt", 1e-6, 1e-4, 2e-6);
+    compare("resources/gearsets/gearset1.txt", 1e-6, 1e-4, 2e-6, 0.0, 0.0);
+    compare("resources/gearsets/gearset2.txt", 1e-6, 1e-4, 2e-6, 0.0, 0.0);
+    compare("resources/gearsets/gearset3.txt", 1e-6, 1e-4, 2e-6, 0.0, 0.0);
     /* the loaded k_m has more of its ripple in the high harmonics (the kinks where pairs take up
      * load): 2e-4 of its ripple is 1.1e-5 of its mean */
-    compare("resources/gearsets/loaded/gearset1.txt", 3e-4, 2e-3, 2e-6);
-    compare("resources/gearsets/loaded/gearset2.txt", 3e-4, 2e-3, 2e-6);
-    compare("resources/gearsets/loaded/gearset3.txt", 3e-4, 2e-3, 2e-6);
+    compare("resources/gearsets/loaded/gearset1.txt", 3e-4, 2e-3, 2e-6, 3e-5, 4e-3);
+    compare("resources/gearsets/loaded/gearset2.txt", 3e-4, 2e-3, 2e-6, 3e-5, 4e-3);
+    compare("resources/gearsets/loaded/gearset3.txt", 3e-4, 2e-3, 2e-6, 3e-5, 4e-3);
     CHECK_DONE();
 }
