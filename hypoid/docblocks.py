@@ -3,6 +3,7 @@ writes from a recorded data file (README's level table, docs/paper-findings.md, 
 §10.8's km-effect table), and the check that fails when a page is stale."""
 
 import pathlib
+import subprocess
 import sys
 
 
@@ -34,3 +35,18 @@ def write_or_check(path, new, check, what, fix):
         print(f"{path}: {what} is stale: run {fix}")
         return 1
     return 0
+
+
+def _git(root, *args):
+    try:
+        return subprocess.run(["git", "-C", str(root), *args], check=True, capture_output=True,
+                              text=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return ""
+
+
+def commit(root):
+    """The checkout's commit at `root`, '+ changes' when the model's sources differ from it
+    (for a record's provenance)."""
+    dirty = bool(_git(root, "status", "--porcelain", "--", "fmu-src", "hypoid", "resources"))
+    return _git(root, "rev-parse", "--short", "HEAD") + (" + changes" if dirty else "")

@@ -20,7 +20,6 @@ import math
 import pathlib
 import re
 import shutil
-import subprocess
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
@@ -47,19 +46,6 @@ def _finite(x):
     return x
 
 
-def _git(*args):
-    try:
-        return subprocess.run(["git", "-C", str(ROOT), *args], check=True, capture_output=True,
-                              text=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return ""
-
-
-def _commit():
-    """The checkout's commit, '+ changes' when the model's sources differ from it."""
-    dirty = bool(_git("status", "--porcelain", "--", "fmu-src", "hypoid", "resources"))
-    return _git("rev-parse", "--short", "HEAD") + (" + changes" if dirty else "")
-
 
 def record(study):
     """The data file from a study directory (study.json, findings.csv, modal.csv,
@@ -73,7 +59,7 @@ def record(study):
     return _finite({
         "study": {k: info.get(k) for k in ("study", "fmu_sha256", "finished", "wall_s",
                                            "cpu_s_total", "n_points", "n_sweep_rows")},
-        "commit": _commit(), "recorded": datetime.date.today().isoformat(),
+        "commit": docblocks.commit(ROOT), "recorded": datetime.date.today().isoformat(),
         "findings": find[["id", "figure", "at", "paper", "this FMU", "verdict"]]
         .to_dict("records"),
         "modal": modal.to_dict("records"),
@@ -273,7 +259,7 @@ def record_loaded(sweep):
     out = {"modal": pred, "sweep": {}, "command": LOADED_SWEEP,
            "continuation": LOADED_CONTINUATION if len(cont) else "", "rows": len(pts) + len(cont),
            "fmu_sha256": str(pts["fmu_sha256"].iloc[0]) if "fmu_sha256" in pts else "",
-           "commit": _commit(), "recorded": datetime.date.today().isoformat()}
+           "commit": docblocks.commit(ROOT), "recorded": datetime.date.today().isoformat()}
     for t, g in pts.groupby("T_s"):
         by = g.groupby("speed_rpm").mean(numeric_only=True).sort_index()
         m = pred.get(f"{t:g}")
