@@ -71,20 +71,20 @@ def points():
 
 
 def block_markdown(rec):
-    """physics.md's table of a recorded comparison: μ, P_loss, its change, DTE and contact loss
-    before -> after."""
-    a, b = rec["before"], rec["after"]
+    """physics.md's table of a recorded comparison: μ, P_loss, its change, DTE and the time the
+    teeth are apart, before -> after (labelled by the settings' values)."""
+    a, b = (" ".join(s.split("=", 1)[-1] for s in rec[k].split()) for k in ("before", "after"))
     lines = [f"| oil | rpm | N·m | μ {a} → {b} | P_loss {a} → {b} [W] | ΔP_loss / P_loss "
-             f"| DTE p-p {a} → {b} [µm] | teeth apart {a} / {b} |", "|---" * 8 + "|"]
+             f"| DTE p-p {a} → {b} [µm] | teeth apart [%] |", "|---" * 8 + "|"]
     for r in rec["rows"]:
         x, y = r["before"], r["after"]
         dP = 100 * (y["P_loss_mean_W"] / x["P_loss_mean_W"] - 1.0)
         lines.append(f"| {OILS[r['lubricant']]} | {r['rpm']:.0f} | {r['T_s']:.0f} | "
                      f"{x['mu_mean']:.4f} → {y['mu_mean']:.4f} | {x['P_loss_mean_W']:.1f} → "
                      f"{y['P_loss_mean_W']:.1f} | {dP:+.1f} % | {x['DTE_pp_um']:.1f} → "
-                     f"{y['DTE_pp_um']:.1f} | {100 * x['contact_loss_fraction']:.0f} / "
-                     f"{100 * y['contact_loss_fraction']:.0f} % |".replace("-", "−"))
-    lines.append(f"\n(`tools/friction_figures.py --before {a} --after {b} --block "
+                     f"{y['DTE_pp_um']:.1f} | {100 * x['contact_loss_fraction']:.0f} → "
+                     f"{100 * y['contact_loss_fraction']:.0f} |".replace("-", "−"))
+    lines.append(f"\n(`tools/friction_figures.py --before {rec['before']} --after {rec['after']} --block "
                  f"{rec['block']}`, code {rec['commit']}, {rec['recorded']}.)")
     return "\n".join(lines)
 

@@ -353,7 +353,7 @@ def comparison_markdown(rec):
             rows["mean DTE − b at 2000 rpm"].append(f"{r[at]['mean_minus_b_um']:.2f} µm")
             apart = [n for n, s in zip(speeds, r) if s["apart"] > 0]
             rows["teeth apart (speeds of the sweep)"].append(
-                f"{len(apart)}" + (f" ({apart[0]:.0f}–{apart[-1]:.0f} rpm)" if apart else ""))
+                ", ".join(f"{n:.0f}" for n in apart) + " rpm" if apart else "none")
             dev = max(abs(s["pp_um"] / q["pp_um"] - 1.0) for s, q in zip(r, ref))
             rows[dev_key].append("–" if key == "reference" else f"{100 * dev:.0f} %")
         lines += [f"| {t} N·m, DTE p-p | " + " | ".join(c for _, c in LAW_COLUMNS) + " |",

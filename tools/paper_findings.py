@@ -212,7 +212,7 @@ LOADED_SET = ("--set tooth_data=loaded roelands_z=simple shear_pressure=mean Lam
 LOADED_SWEEP = (f"hypoid sweep --out DIR {LOADED_SET} --vary T_s=50,100,300 "
                 "--vary speed_rpm=1000:3600:100")
 LOADED_CONTINUATION = (f"hypoid sweep --out DIR {LOADED_SET} --vary T_s=50,100 "
-                       "--vary speed_rpm=1900:2400:50 --continuation")  # through mode 3
+                       "--vary speed_rpm=2200:2900:50 --continuation")  # through mode 3
 
 
 def loaded_modes(stiffness, path=LOADED_FILE):
