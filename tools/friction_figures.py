@@ -84,8 +84,13 @@ def block_markdown(rec):
                      f"{y['P_loss_mean_W']:.1f} | {dP:+.1f} % | {x['DTE_pp_um']:.1f} → "
                      f"{y['DTE_pp_um']:.1f} | {100 * x['contact_loss_fraction']:.0f} → "
                      f"{100 * y['contact_loss_fraction']:.0f} |".replace("-", "−"))
-    lines.append(f"\n(`tools/friction_figures.py --before {rec['before']} --after {rec['after']} --block "
-                 f"{rec['block']}`, code {rec['commit']}, {rec['recorded']}.)")
+    def change(q):
+        c = [100 * (r["after"][q] / r["before"][q] - 1.0) for r in rec["rows"]]
+        return f"{min(c):+.1f} … {max(c):+.1f} %".replace("-", "−")
+    lines.append(f"\nP_loss changes by {change('P_loss_mean_W')} of itself, μ by "
+                 f"{change('mu_mean')}, the DTE peak to peak by {change('DTE_pp_um')} "
+                 f"(`tools/friction_figures.py --before {rec['before']} --after {rec['after']} "
+                 f"--block {rec['block']}`, code {rec['commit']}, {rec['recorded']}).")
     return "\n".join(lines)
 
 
