@@ -9,7 +9,7 @@ docs/cosimulation.md explains the coupling and the figures.
 
 prints, for each communication step, the energy residual of the coupled system and how far the
 libcosim run is from the fmpy run, from the fmu-manipulation-toolbox container run by fmpy, from a
-Gauss-Seidel master and from the finest step; then, at 1 ms, each gear tolerance setting of
+Gauss-Seidel master and from the finest step; then, at H = 0.5 ms, each gear tolerance setting of
 TOLERANCES against a converged run and the hosts against each other under it. --doc writes these
 tables into the document between its markers.
 
@@ -41,12 +41,17 @@ GEAR_FMU = ROOT / "build" / "HypoidGearPair.fmu"
 # variables, load_mode among them): enumerations as coded Integers, its own GUID, same binary.
 GEAR_INTENUM_FMU = ROOT / "build" / "HypoidGearPair_intenum.fmu"
 VEHICLE_FMU = ROOT / "build" / "LongitudinalVehicle.fmu"
+# The scene's communication step. Not 1 ms: there the Jacobi coupling takes the damping of the
+# gear's mode 2 (input shaft and pinion on the mesh, ~300 Hz) through the half-shaft damper's
+# feedthrough, and with the loaded contact law's stiffness it grows (coupling_stability.py,
+# docs/cosimulation.md "Stability").
+H = 5e-4
 RATIO = 36.0 / 13.0  # gear set 1 (checked against the FMU's `ratio` by the test)
 RPM = math.pi / 30.0
 
 # Recorded outputs.
-GEAR_OUT = ["w_s", "w_p", "w_w", "T_w_out", "eta", "P_loss", "E_in", "E_out", "E_friction",
-            "E_damping", "E_excitation", "E_stored"]
+GEAR_OUT = ["w_s", "w_p", "w_w", "W_t", "T_w_out", "eta", "P_loss", "E_in", "E_out",
+            "E_friction", "E_damping", "E_excitation", "E_stored"]
 VEHICLE_OUT = ["T_hs", "v", "w_wheel", "P_in", "E_in", "E_kin", "E_spring", "E_road", "E_grade",
                "E_damper"]
 
@@ -575,7 +580,7 @@ TOLERANCES = [("defaults: arkode_erk, rtol 1e-6, atol 1e-10 m", {}),
               ("cvode_bdf, rtol 1e-10, atol 1e-14 m", TIGHT)]
 
 
-def tolerance_study(h=1e-3, container=True):
+def tolerance_study(h=H, container=True):
     """Each setting of TOLERANCES at step h: w_p's largest difference from the CONVERGED run
     (relative to max |w_p|), and libcosim's and the container's from our master under it."""
     container = container and container_available() is None
@@ -611,7 +616,7 @@ def energy_table(rows):
     lines = ["| h | W_Ts (J) | residual (J) | residual / W_Ts | coupling term (J) | "
              "gear's own closure (J) | vehicle's own (J) |", "|---|---|---|---|---|---|---|"]
     for r in rows:
-        e, bold = r["energy"], "**" if r["h"] in (1e-3, 1e-4) else ""
+        e, bold = r["energy"], "**" if r["h"] in (H, 1e-4) else ""
         lines.append(f"| {bold}{r['h'] * 1e3:g} ms{bold} | {e['W_Ts']:.2f} | "
                      f"{bold}{e['residual']:.3g}{bold} | {bold}{_e(e['relative_residual'])}{bold} "
                      f"| {e['coupling']:.3g} | {_e(e['gear_closure'])} | "
@@ -623,7 +628,7 @@ def hosts_table(rows):
     lines = ["| h | output | libcosim − fmpy (Jacobi) | container − fmpy | Jacobi − Gauss-Seidel "
              "| vs 0.1 ms |", "|---|---|---|---|---|---|"]
     for r in rows:
-        if r["h"] not in (1e-3, 1e-4):
+        if r["h"] not in (H, 1e-4):
             continue
         for name, label in (("w_p", "w_p"), ("T_w_out", "T_w seen (`T_w_out`)"), ("eta", "eta")):
             key = "rms_rel" if name == "eta" else "rel"
@@ -665,7 +670,8 @@ def write_doc(path, rows, tol_rows):
 
 
 def print_tolerances(rows):
-    print("gear tolerance settings at 1 ms: w_p vs converged, libcosim - fmpy, container - fmpy:")
+    print(f"gear tolerance settings at {H * 1e3:g} ms: w_p vs converged, libcosim - fmpy, "
+          "container - fmpy:")
     for r in rows:
         print(f"  {r['setting']:<48} {_e(r['vs_converged']):>8} "
               f"{_e(r.get('libcosim_vs_fmpy')):>8} {_e(r.get('container_vs_fmpy')):>8}")
