@@ -43,8 +43,8 @@ typedef enum { HG_ADVANCE_REACHED, HG_ADVANCE_ROOT, HG_ADVANCE_FAILED } hg_advan
  * y receives the solution at *t. FAILED fills err. With pass = 0 the integrator stops exactly at
  * t_stop; with pass = 1 it may step beyond t_stop (the right-hand side must hold there as it is)
  * and give the solution at t_stop from its interpolant, so that held inputs cost no steps cut
- * short at every t_stop. Only CVODE passes (its Nordsieck interpolant has the method's order);
- * the others stop at t_stop all the same. */
+ * short at every t_stop. CVODE (its Nordsieck interpolant) and ARKODE (its cubic Hermite
+ * interpolant) pass; Newmark stops at t_stop all the same. */
 hg_advance_result hg_solver_advance(hg_solver *s, double t_stop, int pass, double *t, double *y,
                                     int *roots, char *err, size_t errlen);
 

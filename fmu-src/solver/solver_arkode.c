@@ -62,7 +62,7 @@ static const hg_sun_api API = {
     .tstop_return = ARK_TSTOP_RETURN,
     .root_return = ARK_ROOT_RETURN,
     .normal = ARK_NORMAL,
-    .can_pass = 0,
+    .can_pass = 1, /* held inputs: no step cut at t_stop (docs/model.md, "Steps without restarts") */
     .reinit = reinit, /* ERKStepReInit with the right-hand side */
     .reinit_name = "ERKStepReInit",
     HG_SUN_FN(set_max_step, ERKStepSetMaxStep),

@@ -137,8 +137,9 @@ static void check_newmark_discrete(void)
 }
 
 /* Communication points far denser than the integrator's own steps (no step limit): stopping
- * at each costs at least one step per point; passing them (pass = 1, CVODE) interpolates, with
- * the same accuracy against the closed form and a fraction of the steps. */
+ * at each costs at least one step per point; passing them (pass = 1: CVODE's Nordsieck
+ * interpolant, ARKODE's cubic Hermite one) interpolates, with the same accuracy against the
+ * closed form and a fraction of the steps. */
 static long dense_points(hg_method method, int pass, double tol)
 {
     oscillator o = {2.0 * PI * 5.0, 0.05};
@@ -197,6 +198,7 @@ int main(void)
     }
     check_passing(HG_METHOD_BDF, tol[0]);
     check_passing(HG_METHOD_ADAMS, tol[1]);
+    check_passing(HG_METHOD_ERK, tol[0]);
     check_newmark_discrete();
     check_errors();
     CHECK_DONE();
