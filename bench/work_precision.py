@@ -93,15 +93,16 @@ def errors(row, ref):
 
 
 def pick_resonance(fmu):
-    """The 1200 rpm scene if its reference shows contact loss, else the nearby speed with the most
-    (docs/physics.md §8.7)."""
+    """The resonance scene's speed (wp_driver.RESONANCE_RPM) if its reference shows contact loss,
+    else the nearby speed with the most (the mode-3 resonance of the default tooth data)."""
+    rpm0 = W.RESONANCE_RPM
     sc = W.scenes()["resonance"]
     ref = W.measure(fmu, sc, "full", W.REFERENCE, repeats=1, min_total_cpu=0)
-    note = f"1200 rpm reference: contact lost {100 * ref.get('loss', 0):.1f} % of the window"
+    note = f"{rpm0:.0f} rpm reference: contact lost {100 * ref.get('loss', 0):.1f} % of the window"
     if ref["status"] == "ok" and ref["loss"] > 0.01:
-        return 1200.0, note + " (kept)"
-    best = (ref.get("loss", 0.0), 1200.0)
-    for rpm in (1100, 1150, 1175, 1225, 1250, 1300):
+        return rpm0, note + " (kept)"
+    best = (ref.get("loss", 0.0), rpm0)
+    for rpm in (rpm0 + d for d in (-100, -50, -25, 25, 50, 100)):
         r = W.measure(fmu, W.scenes(rpm)["resonance"], "full", W.Setting("bdf", 1e-8), repeats=1,
                       min_total_cpu=0)
         if r["status"] == "ok":

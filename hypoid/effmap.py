@@ -24,6 +24,7 @@ import pathlib
 import time
 
 from hypoid import cliargs, parallel
+from hypoid.gearset_file import read_gearset
 from hypoid.instance import unzipped
 from hypoid.paths import data_file, user_path
 from hypoid.values import RPM, TABLE
@@ -161,6 +162,14 @@ def settings_text(params):
             f"window {WINDOW_CYCLES} mesh cycles")
 
 
+def coast_flank_text(gear_set_path):
+    """What the coast rows run on: the file's coast flank, or the drive flank's data where the
+    file has none (a one-series file: the FMU uses it for both flanks)."""
+    if "coast" in read_gearset(gear_set_path).flanks:
+        return "Coast runs on the gear-set file's coast-flank contact data."
+    return "Coast uses the drive flank's contact data for the coast flank (no coast TCA data)."
+
+
 def write_map(fmu, out, params, workers, grid, command):
     t0 = time.time()
     keys = provenance_keys(fmu, params)  # before the long run: a missing file fails at once
@@ -174,7 +183,7 @@ def write_map(fmu, out, params, workers, grid, command):
         f"Made with {settings_text(params)};",
         "eta = 1 - dE_friction/dE_in (coast: T_s < 0, the wheel drives, "
         "eta = 1 - dE_friction/(-dE_out)).",
-        "Coast uses the drive flank's contact data for the coast flank (no coast TCA data).",
+        coast_flank_text(source_files(fmu, params)["gear_set"]),
         f"{len(etas)} points in {time.time() - t0:.0f} s.",
     ]
     name = "full-model map: " + (", ".join(f"{k}={pathlib.Path(str(v)).name}"

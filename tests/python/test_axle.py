@@ -208,9 +208,13 @@ def test_coast_on_the_vehicle_inertia_reads_the_mesh_efficiency(harness):
                  w_p0=2000 * RPM)
     assert np.all(r["W_t"] < 0) and np.all(r["P_in"] > 0) and np.all(r["P_in_axle"] > 0)
     assert np.all((r["eta"] > 0.98) & (r["eta"] < 0.995))
-    # the power that enters from the gear: what leaves at the pinion plus the losses
-    assert np.median(r["P_in"]) == pytest.approx(60.0 * np.median(r["w_p"]) + np.median(r["P_loss"]),
-                                                 rel=0.05)
+    # the power that enters from the gear: what leaves at the pinion plus the losses, as means
+    # over the run. The powers swing at the mesh frequency (W_t by 800 N rms on the loaded data,
+    # whose k_m ripples 35-40 % at this torque, 360 N on the paper's one series), which the 5 ms
+    # samples alias, so their median is not their mean (7 % off on the loaded data); the means
+    # balance within 0.6 % on the loaded data and 1.2 % on the paper's one series.
+    assert np.mean(r["P_in"]) == pytest.approx(60.0 * np.mean(r["w_p"]) + np.mean(r["P_loss"]),
+                                               rel=0.05)
 
 
 def test_engine_braking_reads_the_wheel_end_power(harness):

@@ -15,6 +15,15 @@ COUNTERS = ["solver_steps", "rhs_evals"]
 OUT = REALS + COUNTERS
 AUDIT_COLS = slice(len(REALS) - len(AUDIT), len(REALS))
 TIGHT = dict(rtol=1e-10)
+# The friction energy against the tight solution: the integrator's error on it follows the
+# friction power's ripple along the mesh cycle, which the loaded tooth data (the defaults) double
+# (6.8 % peak to peak on the rigid mesh at 125 N.m, the paper's one series 3.1 %): measured on the
+# rigid level 3.3e-5 for the held ramp and 1.1e-5 with derivatives (one series 8e-6), the same with
+# the friction solved directly (so not the table). Speeds and E_in stay held to 2e-5.
+FRICTION_REL = 1e-4
+# The energy audit closes to the integrator's error: with the loaded force law 1.5e-6 of E_in on
+# the full level at its rtol 1e-6 in the held ramp (1.1e-7 at rtol 1e-7; the one series 1.0e-7).
+AUDIT_REL = 3e-6
 
 
 def audit_residual(row):
@@ -63,9 +72,11 @@ def test_a_ramp_of_small_steps_matches_the_tight_solution(harness, level):
     n = 200 if level != "full" else 40
     rows, _ = run(harness, level, ramp, n, 1e-3)
     tight, _ = run(harness, level, ramp, n, 1e-3, name="tight", **TIGHT)
-    for name in ("w_p", "w_s", "E_in", "E_friction"):
+    for name in ("w_p", "w_s", "E_in"):
         assert col(rows, name)[-1] == pytest.approx(col(tight, name)[-1], rel=2e-5), name
-    assert abs(audit_residual(rows[-1, AUDIT_COLS])) < 1e-6 * col(rows, "E_in")[-1]
+    assert col(rows, "E_friction")[-1] == pytest.approx(col(tight, "E_friction")[-1],
+                                                        rel=FRICTION_REL)
+    assert abs(audit_residual(rows[-1, AUDIT_COLS])) < AUDIT_REL * col(rows, "E_in")[-1]
 
 
 def test_the_explicit_method_restarts_with_its_step_size(harness):
@@ -91,8 +102,10 @@ def test_a_ramp_with_derivatives_continues_and_matches_the_tight_solution(harnes
     rows, _ = run(harness, "rigid", ramp, n, h, derivative=lambda t: 250.0)
     tight, _ = run(harness, "rigid", ramp, n, h, derivative=lambda t: 250.0, name="tight",
                    **TIGHT)
-    for name in ("w_p", "E_in", "E_friction"):
+    for name in ("w_p", "E_in"):
         assert col(rows, name)[-1] == pytest.approx(col(tight, name)[-1], rel=2e-5), name
+    assert col(rows, "E_friction")[-1] == pytest.approx(col(tight, "E_friction")[-1],
+                                                        rel=FRICTION_REL)
     assert abs(audit_residual(rows[-1, AUDIT_COLS])) < 1e-6 * col(rows, "E_in")[-1]
 
 

@@ -8,12 +8,20 @@ import numpy as np
 import pytest
 
 from hypoid import modes
+from hypoid.variables import ENUMERATIONS
+
+PAPER_DATA = ENUMERATIONS["tooth_data"]["paper"]
 
 
-@pytest.mark.parametrize("I_p", [0.014, modes.I_P_GEOMETRY])
-def test_frequencies_and_dampers_match_the_fmu(harness, I_p):
+# The what-if (I_p from the pinion's geometry, damping ratios 0.02 / 0.02 / 0.03) is the study's
+# explanation of the paper's findings and runs the paper's choices (study.PAPER_CHOICES: its
+# calibrated one series, k_m0 1.71e8 N/m). On the loaded data's tangent k_m0 (4.8e8 N/m) those
+# ratios need a negative damper and the FMU takes its least-squares fallback (tests/c/test_modal.c),
+# so the what-if case is checked on the data it is run with; Table 3's inertia on the defaults.
+@pytest.mark.parametrize("I_p, data", [(0.014, {}), (modes.I_P_GEOMETRY, {"tooth_data": PAPER_DATA})])
+def test_frequencies_and_dampers_match_the_fmu(harness, I_p, data):
     h = harness()
-    h.init(I_p=I_p, zeta_2=0.02, zeta_3=0.02, zeta_4=0.03) if I_p != 0.014 else h.init()
+    h.init(I_p=I_p, zeta_2=0.02, zeta_3=0.02, zeta_4=0.03, **data) if I_p != 0.014 else h.init()
     k_m0, R_p0 = h.get("k_m0", "R_p0")
     s = modes.system(I_p=I_p, k_m=k_m0, R_p=R_p0)
     w, phi = modes.modes(s)
