@@ -2,8 +2,8 @@
 docs/figures/km_torque.png (k_m and k_t per torque level, both flanks, each built-in set, with
 ISO 10300's full-contact k_n and the calibrated k_m0) and docs/figures/km_effect.png (what the
 loaded stiffness level does to efficiency and DTE at 2000 rpm x 50/300 N·m, through the FMU's
-k_m_scale, and with the layered gear-set files of `hypoid tca surrogate --loaded`, which the FMU
-interpolates on the filtered torque). The effect table is recorded into
+k_m_scale set to the loaded tangent level, and with the layered gear-set files of `hypoid tca
+surrogate --loaded`, whose mesh force the FMU takes from the loaded contact law). The effect table is recorded into
 docs/figures/km_effect.json and written from it into docs/physics.md §10.8 between its
 km-effect markers.
 
@@ -44,10 +44,11 @@ def stiffness_table():
             for f, meshes in tl.loaded_flanks(sur.TABLE_1[n]).items()}
 
 
-def km_at(meshes, torque):
-    """Mean secant k_m at a torque, interpolated in log-log between the levels [N/m]."""
+def km_at(meshes, torque, which="k_m"):
+    """Mean stiffness at a torque, interpolated in log-log between the levels [N/m]: the secant
+    k_m or the tangent k_t."""
     T = np.log([m.torque for m in meshes])
-    k = np.log([m.k_m.mean() for m in meshes])
+    k = np.log([getattr(m, which).mean() for m in meshes])
     return float(np.exp(np.interp(np.log(torque), T, k)))
 
 
@@ -114,7 +115,7 @@ def effect_table(table, fmu):
             layered = pathlib.Path(tmp) / f"gearset{n}_loaded.txt"
             write_gearset(layered, tca.loaded_surrogate(n))
             for torque in POINT_TORQUES:
-                scale = km_at(table[(n, "drive")], torque) / k_m0
+                scale = km_at(table[(n, "drive")], torque, "k_t") / k_m0
                 rows.append((n, torque, scale, operating_point(gear, n, torque, base),
                              operating_point(gear, n, torque, {**base, "k_m_scale": scale}),
                              operating_point(gear, n, torque, {"gear_set_file": str(layered)})))
@@ -128,7 +129,7 @@ def plot_effect(rows, out):
     for i, (what, unit, scale) in enumerate((("P_loss_cycle", "W", 1.0),
                                              ("DTE peak to peak", "µm", 1e6))):
         j = 1 if i == 0 else 2
-        for k, label in enumerate(("built-in (k_m0 calibrated)", "k_m_scale = k_m(T)/k_m0",
+        for k, label in enumerate(("built-in (k_m0 calibrated)", "k_m_scale = k_t(T)/k_m0",
                                    "layered file (both flanks, 5 levels)")):
             ax[i].bar(x + 0.27 * (k - 1), [r[3 + k][j] * scale for r in rows], 0.27, label=label)
         ax[i].set_xticks(x, labels, fontsize=7)
