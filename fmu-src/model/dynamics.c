@@ -39,12 +39,12 @@ int hg_dyn_loaded_law(const hg_dyn_params *p)
 /* The force law of a layered file at theta on the flank in contact, the levels' stiffness from
  * the tables or the series. */
 static void loaded_law(const hg_dyn_params *p, double theta, const hg_dyn_eval *ev,
-                       hg_mesh_law *law)
+                       hg_law_levels *lv, hg_mesh_law *law)
 {
     if (p->phase)
         hg_phase_table_law(p->phase, ev->pick.flank, &ev->cell, law);
     else
-        hg_mesh_law_of_series(p->gear, ev->flank, theta, law);
+        hg_mesh_law_of_series(p->gear, ev->flank, theta, lv, law);
 }
 
 /* Without backlash (or with a rigid mesh) both flanks touch: the net force loads one of them. */
@@ -92,6 +92,7 @@ static void flank_loads(const hg_dyn_params *p, int mode, double x, const hg_mes
 static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn_eval *ev)
 {
     double w_p = y[HG_Y_W_P], theta = p->gear->N_p * y[HG_Y_PHI_P];
+    hg_law_levels lv; /* without tables */
     hg_mesh_law law;
     if (p->mesh == HG_MESH_MODEL_VARYING) {
         ev->flank = active_flank(p, mode, y[HG_Y_X]);
@@ -103,7 +104,7 @@ static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn
         } else {
             hg_gearset_mesh(p->gear, ev->flank, y[HG_Y_T_KM], theta, &ev->mesh);
         }
-        if (hg_dyn_loaded_law(p)) loaded_law(p, theta, ev, &law);
+        if (hg_dyn_loaded_law(p)) loaded_law(p, theta, ev, &lv, &law);
         ev->f = hg_backlash_f(&p->backlash, y[HG_Y_X], mode);
         ev->Phi = hg_backlash_potential(&p->backlash, y[HG_Y_X], mode);
     } else {

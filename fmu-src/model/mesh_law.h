@@ -25,16 +25,20 @@ typedef struct {
 /* The levels from their loads W[l] [N]. */
 void hg_mesh_law_levels(int n, const double W[], hg_law_levels *lv);
 
-/* The levels' static points at one mesh angle theta. */
+/* The law at one mesh angle theta: the levels' stiffness there, from which the static points
+ * (a_l = W_l / k_m,l) follow where the law needs them, and the law's energy at each point, so
+ * that an evaluation needs only the segment it falls in. */
 typedef struct {
-    hg_law_levels lv;
-    double a[HG_MAX_LEVELS];      /* approach W_l / k_m,l(theta), increasing [m] */
-    double per_a[HG_MAX_LEVELS];  /* 1 / a_l [1/m] */
-    double r[HG_MAX_LEVELS];      /* (da_l/dtheta) / a_l = -(dk_m,l/dtheta) / k_m,l [1/rad] */
+    const hg_law_levels *lv;
+    double k[HG_MAX_LEVELS];  /* k_m,l(theta) [N/m] */
+    double dk[HG_MAX_LEVELS]; /* dk_m,l/dtheta [N/m/rad] */
+    double B[HG_MAX_LEVELS];  /* energy at point l, the integral of W from 0 to a_l (l >= 1; B[0]
+                                 = 0, the first segment's energy counts from a = 0) [J] */
+    double dB[HG_MAX_LEVELS]; /* its total d/dtheta, the point moving with theta [J/rad] */
 } hg_mesh_law;
 
-/* The points from the levels lv and their stiffness k[l] [N/m] and dk/dtheta dk[l] [N/m/rad] at
- * theta. */
+/* The law of the levels lv (which must outlive it) with their stiffness k[l] [N/m] and
+ * dk/dtheta dk[l] [N/m/rad] at theta, the points' energies from them in closed form. */
 void hg_mesh_law_points(const hg_law_levels *lv, const double k[], const double dk[],
                         hg_mesh_law *law);
 
@@ -56,8 +60,9 @@ double hg_mesh_law_approach(const hg_mesh_law *law, double W);
 void hg_mesh_law_levels_of(const hg_gearset *g, int data_flank, hg_law_levels *lv);
 
 /* The law of `flank` (as for hg_gearset_level_at) at theta from the series (hg_gearset_mesh's
- * alternative for a layered file). */
-void hg_mesh_law_of_series(const hg_gearset *g, int flank, double theta, hg_mesh_law *law);
+ * alternative for a layered file), its levels in lv. */
+void hg_mesh_law_of_series(const hg_gearset *g, int flank, double theta, hg_law_levels *lv,
+                           hg_mesh_law *law);
 
 /* Mean over a mesh cycle of the law's tangent at the static load of pinion torque T [N m] on
  * `flank` [N/m], at a level's own load the mean of the slopes on either side of its point: the

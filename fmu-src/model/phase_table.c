@@ -42,24 +42,53 @@ static void build_one(hg_phase_table *t, const hg_gearset *g, const hg_flank_ser
 void hg_phase_tables_free(hg_phase_tables *ts)
 {
     free(ts->t);
+    free(ts->k_levels);
     ts->t = NULL;
+    ts->k_levels = NULL;
     ts->n_flanks = ts->n_levels = 0;
+}
+
+/* The force law's nodes of flank fl, from its levels' tables and its levels ts->law[fl]. */
+static void build_levels(hg_pt_levels *K, const hg_phase_tables *ts, int fl)
+{
+    int i, lv;
+    for (i = 0; i < HG_PT_N_MESH; i++) {
+        double k[HG_MAX_LEVELS], dk[HG_MAX_LEVELS];
+        hg_mesh_law law;
+        for (lv = 0; lv < ts->n_levels; lv++) {
+            const double *node = ts->t[fl * ts->n_levels + lv].mesh[i][HG_PT_K_M];
+            K->k[i][0][lv] = k[lv] = node[0];
+            K->k[i][1][lv] = node[1];
+            dk[lv] = node[1] * PER_W_MESH;
+        }
+        hg_mesh_law_points(&ts->law[fl], k, dk, &law);
+        for (lv = 0; lv < ts->n_levels; lv++) {
+            K->B[i][0][lv] = law.B[lv];
+            K->B[i][1][lv] = law.dB[lv] * W_MESH;
+        }
+    }
 }
 
 int hg_phase_tables_build(hg_phase_tables *ts, const hg_gearset *g)
 {
-    int fl, lv, n = g->n_flanks * g->n_levels;
-    if (ts->n_flanks * ts->n_levels != n) {
+    int fl, lv, n = g->n_flanks * g->n_levels, layered = g->n_levels > 1;
+    if (ts->n_flanks * ts->n_levels != n || ts->n_flanks != g->n_flanks) {
         hg_phase_tables_free(ts);
-        if (!(ts->t = malloc((size_t)n * sizeof *ts->t))) return -1;
+        if (!(ts->t = malloc((size_t)n * sizeof *ts->t)) ||
+            (layered && !(ts->k_levels = calloc((size_t)g->n_flanks, sizeof *ts->k_levels)))) {
+            hg_phase_tables_free(ts);
+            return -1;
+        }
     }
     ts->n_flanks = g->n_flanks;
     ts->n_levels = g->n_levels;
     for (fl = 0; fl < g->n_flanks; fl++)
         for (lv = 0; lv < g->n_levels; lv++)
             build_one(&ts->t[fl * g->n_levels + lv], g, &g->s[fl][lv]);
-    for (fl = 0; fl < g->n_flanks && g->n_levels > 1; fl++)
+    for (fl = 0; fl < g->n_flanks && layered; fl++) {
         hg_mesh_law_levels_of(g, fl, &ts->law[fl]);
+        build_levels(&ts->k_levels[fl], ts, fl);
+    }
     return 0;
 }
 
@@ -130,17 +159,28 @@ void hg_phase_table_mesh(const hg_phase_tables *ts, const hg_level_pick *b, cons
     out->R_p = blend(out->R_p, hi.R_p, b->w); /* e_0: one series for every flank and level */
 }
 
+/* Values v and d/dtheta dv of every lane of the nodes n0, n1 at the cell c (value() and slope()
+ * lane by lane). */
+static void lanes(const hg_pt_cell *c, const double (*n0)[HG_MAX_LEVELS],
+                  const double (*n1)[HG_MAX_LEVELS], double *restrict v, double *restrict dv)
+{
+    double a0 = c->a0, b0 = c->b0, a1 = c->a1, b1 = c->b1;
+    double da0 = c->da0, db0 = c->db0, da1 = c->da1, db1 = c->db1;
+    int l;
+    for (l = 0; l < HG_MAX_LEVELS; l++) {
+        v[l] = a0 * n0[0][l] + b0 * n0[1][l] + a1 * n1[0][l] + b1 * n1[1][l];
+        dv[l] = (da0 * n0[0][l] + db0 * n0[1][l] + da1 * n1[0][l] + db1 * n1[1][l]) * PER_W_MESH;
+    }
+}
+
 void hg_phase_table_law(const hg_phase_tables *ts, int data_flank, const hg_pt_cell *c,
                         hg_mesh_law *law)
 {
-    double k[HG_MAX_LEVELS], dk[HG_MAX_LEVELS];
-    int l, i0 = c->i % HG_PT_N_MESH, i1 = (c->i + 1) % HG_PT_N_MESH;
-    for (l = 0; l < ts->n_levels; l++) {
-        const hg_phase_table *t = &ts->t[data_flank * ts->n_levels + l];
-        k[l] = value(c, t->mesh[i0][HG_PT_K_M], t->mesh[i1][HG_PT_K_M]);
-        dk[l] = slope(c, t->mesh[i0][HG_PT_K_M], t->mesh[i1][HG_PT_K_M]);
-    }
-    hg_mesh_law_points(&ts->law[data_flank], k, dk, law);
+    const hg_pt_levels *K = &ts->k_levels[data_flank];
+    int i0 = c->i % HG_PT_N_MESH, i1 = (c->i + 1) % HG_PT_N_MESH;
+    law->lv = &ts->law[data_flank];
+    lanes(c, K->k[i0], K->k[i1], law->k, law->dk);
+    lanes(c, K->B[i0], K->B[i1], law->B, law->dB);
 }
 
 /* The pairs' values of one table, the load shares before clamping. */

@@ -42,12 +42,24 @@ typedef struct {
     double a0, b0, a1, b1, da0, db0, da1, db1;
 } hg_pt_cell;
 
+/* The force law of one flank at each mesh node, the levels side by side (value, and slope times
+ * the node spacing, as in hg_phase_table.mesh): every level's k_m, and the law's energy at its
+ * point (hg_mesh_law.B, from the node's k_m in closed form), interpolated lane by lane (the
+ * unused levels zero). The energies' interpolant is the law's energy between the nodes: it is
+ * the law's own only at the nodes, which moves nothing but the energy audit's E_excitation and
+ * E_stored (the force and its tangent come from the interpolated k_m alone). */
+typedef struct {
+    double k[HG_PT_N_MESH][2][HG_MAX_LEVELS];
+    double B[HG_PT_N_MESH][2][HG_MAX_LEVELS];
+} hg_pt_levels;
+
 /* The tables of every flank and torque level of a gear set, t[flank * n_levels + level], and for
- * a layered file the force law's constants of each flank. */
+ * a layered file the force law's constants and stiffness nodes of each flank. */
 typedef struct {
     int n_flanks, n_levels;
     hg_phase_table *t;
     hg_law_levels law[HG_N_FLANKS]; /* n_levels > 1 */
+    hg_pt_levels *k_levels;         /* [flank], n_levels > 1, else NULL */
 } hg_phase_tables;
 
 /* Tabulates every series of g (after scaling) into ts, which must be zeroed or built before; -1

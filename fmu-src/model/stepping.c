@@ -45,6 +45,7 @@ void hg_stepping_start(hg_runtime *rt, const hg_setup *s, const hg_vars *v, doub
 {
     const hg_dyn_params *p = &s->p;
     hg_mesh_point mesh;
+    hg_law_levels lv;
     hg_mesh_law law;
     hg_dyn_eval ev;
     double *y = rt->y, W_t, T_g = 0.0;
@@ -53,7 +54,7 @@ void hg_stepping_start(hg_runtime *rt, const hg_setup *s, const hg_vars *v, doub
     rt->t = rt->t_u0 = t0;
     hg_vars_inputs(v, &rt->u0);
     rt->u_end = rt->u0;
-    if (hg_dyn_loaded_law(p)) hg_mesh_law_of_series(&s->gear, flank, 0.0, &law);
+    if (hg_dyn_loaded_law(p)) hg_mesh_law_of_series(&s->gear, flank, 0.0, &lv, &law);
     if (p->mesh == HG_MESH_MODEL_VARYING)
         hg_gearset_mesh(&s->gear, flank, fabs(v->T_s), 0.0, &mesh);
     else {

@@ -12,10 +12,13 @@ static const double W_L[N] = {1190.0, 2380.0, 4760.0, 9520.0, 19040.0}; /* [N] *
 
 /* Points on W = C a^p: k_l = W_l / a_l, a_l = (W_l / C)^(1/p); each level's k scaled by
  * (1 + e_l sin theta) to make the law depend on the mesh angle. */
+/* Approach of level l's point. */
+static double a_of(const hg_mesh_law *law, int l) { return W_L[l] / law->k[l]; }
+
 static void law_at(double theta, double C, double p, const double e[N], hg_mesh_law *law)
 {
+    static hg_law_levels lv; /* the law points to it */
     double k[N], dk[N];
-    hg_law_levels lv;
     int l;
     for (l = 0; l < N; l++) {
         double k0 = W_L[l] / pow(W_L[l] / C, 1.0 / p);
@@ -107,14 +110,14 @@ static void energy_is_the_integral(void)
         double lo = 0.0, U = 0.0;
         int l;
         for (l = 0; l <= N && lo < a[i]; l++) {
-            double hi = l < N && law.a[l] < a[i] ? law.a[l] : a[i];
+            double hi = l < N && a_of(&law, l) < a[i] ? a_of(&law, l) : a[i];
             U += simpson(&law, lo, hi, 2000);
             lo = hi;
         }
         hg_mesh_law_force(&law, a[i], &f);
         CHECK_CLOSE(f.U, U, 1e-9, 0.0);
     }
-    CHECK(a[5] > law.a[N - 1] && a[0] < law.a[0]); /* below the first and beyond the last */
+    CHECK(a[5] > a_of(&law, N - 1) && a[0] < a_of(&law, 0)); /* below the first, beyond the last */
 }
 
 static void ends_and_nodes(void)
@@ -125,14 +128,14 @@ static void ends_and_nodes(void)
     int l;
     law_at(1.1, C, P, e, &law);
     for (l = 0; l < N; l++) { /* each level's static point lies on the law */
-        hg_mesh_law_force(&law, law.a[l], &f);
+        hg_mesh_law_force(&law, a_of(&law, l), &f);
         CHECK_CLOSE(f.W, W_L[l], 1e-12, 0.0);
     }
     /* beyond the last level: the last point's tangent */
-    hg_mesh_law_force(&law, law.a[N - 1] * (1.0 - 1e-12), &f);
-    hg_mesh_law_force(&law, 2.0 * law.a[N - 1], &g);
+    hg_mesh_law_force(&law, a_of(&law, N - 1) * (1.0 - 1e-12), &f);
+    hg_mesh_law_force(&law, 2.0 * a_of(&law, N - 1), &g);
     CHECK_CLOSE(g.k, f.k, 1e-9, 0.0);
-    CHECK_CLOSE(g.W, W_L[N - 1] + f.k * law.a[N - 1], 1e-9, 0.0);
+    CHECK_CLOSE(g.W, W_L[N - 1] + f.k * a_of(&law, N - 1), 1e-9, 0.0);
     hg_mesh_law_force(&law, 0.0, &f);
     CHECK(f.W == 0.0 && f.k == 0.0 && f.U == 0.0 && f.dU == 0.0);
     hg_mesh_law_force(&law, -1e-6, &f);

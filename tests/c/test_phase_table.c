@@ -34,24 +34,28 @@ static double slope_amplitude(const hg_series *y)
 
 /* The force law of a layered file from the tables against the law from the series at theta,
  * below, at and between the levels' points and beyond the last: the worst differences of W
- * relative to W and of dU/dtheta relative to U (its scale) into worst[0], worst[1]. */
+ * relative to W and of U and dU/dtheta relative to U into worst[0], worst[1] (the tables
+ * interpolate the law's energy at the points: hg_pt_levels). */
 static void compare_law(const hg_gearset *g, const hg_phase_tables *ts, int fl, double theta,
                         const hg_pt_cell *cell, double worst[2])
 {
     static const double at[] = {0.4, 1.0, 1.3};
+    hg_law_levels lv;
     hg_mesh_law lt, ls;
     hg_level_pick b;
     int l, i;
     hg_gearset_level_at(g, fl, 0.0, &b);
     hg_phase_table_law(ts, b.flank, cell, &lt);
-    hg_mesh_law_of_series(g, fl, theta, &ls);
+    hg_mesh_law_of_series(g, fl, theta, &lv, &ls);
     for (l = 0; l < g->n_levels; l++)
         for (i = 0; i < 3; i++) {
             hg_law_force t, s;
-            hg_mesh_law_force(&lt, at[i] * ls.a[l], &t);
-            hg_mesh_law_force(&ls, at[i] * ls.a[l], &s);
+            double a = at[i] * lv.W[l] / ls.k[l];
+            hg_mesh_law_force(&lt, a, &t);
+            hg_mesh_law_force(&ls, a, &s);
             worst[0] = fmax(worst[0], fabs(t.W - s.W) / s.W);
             worst[1] = fmax(worst[1], fabs(t.dU - s.dU) / s.U);
+            worst[1] = fmax(worst[1], fabs(t.U - s.U) / s.U);
         }
 }
 
@@ -118,7 +122,7 @@ static void compare(const char *path, double bound_v, double bound_d, double bou
     for (fl = 0; fl < HG_N_FLANKS; fl++)
         for (i = 0; i < (int)(sizeof T / sizeof T[0]); i++) compare_at(&g, &ts, fl, T[i], worst);
     printf("%s (%d flank(s), %d level(s)): mesh values %.1e, mesh slopes %.1e, pair data %.1e of "
-           "the ripple; law: W %.1e of W, dU/dtheta %.1e of U\n", path, g.n_flanks, g.n_levels,
+           "the ripple; law: W %.1e of W, U and dU/dtheta %.1e of U\n", path, g.n_flanks, g.n_levels,
            worst[0], worst[1], worst[2], worst[3], worst[4]);
     CHECK(worst[0] < bound_v && worst[1] < bound_d && worst[2] < bound_pair);
     CHECK(worst[3] <= bound_W && worst[4] <= bound_dU);
