@@ -25,16 +25,19 @@ typedef struct {
 /* The levels from their loads W[l] [N]. */
 void hg_mesh_law_levels(int n, const double W[], hg_law_levels *lv);
 
-/* The law at one mesh angle theta: the levels' stiffness there, from which the static points
- * (a_l = W_l / k_m,l) follow where the law needs them, and the law's energy at each point, so
- * that an evaluation needs only the segment it falls in. */
+/* The law at one mesh angle theta: each level's static point in logarithms, ln a_l = ln(W_l /
+ * k_m,l), its load times its approach and the law's energy there, each with its total
+ * d/dtheta (the point moving with theta), so that an evaluation needs only the segment it falls
+ * in: one logarithm and one exponential. */
 typedef struct {
     const hg_law_levels *lv;
-    double k[HG_MAX_LEVELS];  /* k_m,l(theta) [N/m] */
-    double dk[HG_MAX_LEVELS]; /* dk_m,l/dtheta [N/m/rad] */
-    double B[HG_MAX_LEVELS];  /* energy at point l, the integral of W from 0 to a_l (l >= 1; B[0]
-                                 = 0, the first segment's energy counts from a = 0) [J] */
-    double dB[HG_MAX_LEVELS]; /* its total d/dtheta, the point moving with theta [J/rad] */
+    double ln_a[HG_MAX_LEVELS];  /* ln(a_l / 1 m) */
+    double dln_a[HG_MAX_LEVELS]; /* its d/dtheta, -(dk_m,l/dtheta) / k_m,l [1/rad] */
+    double P[HG_MAX_LEVELS];     /* W_l a_l [J] */
+    double dP[HG_MAX_LEVELS];    /* [J/rad] */
+    double B[HG_MAX_LEVELS];     /* energy at point l, the integral of W from 0 to a_l (l >= 1;
+                                    B[0] = 0, the first segment's energy counts from a = 0) [J] */
+    double dB[HG_MAX_LEVELS];    /* [J/rad] */
 } hg_mesh_law;
 
 /* The law of the levels lv (which must outlive it) with their stiffness k[l] [N/m] and

@@ -48,6 +48,13 @@ void hg_phase_tables_free(hg_phase_tables *ts)
     ts->n_flanks = ts->n_levels = 0;
 }
 
+/* One channel of the force law's nodes: value and slope times the node spacing of each level. */
+static void put(double node[2][HG_MAX_LEVELS], int lv, double v, double dv)
+{
+    node[0][lv] = v;
+    node[1][lv] = dv * W_MESH;
+}
+
 /* The force law's nodes of flank fl, from its levels' tables and its levels ts->law[fl]. */
 static void build_levels(hg_pt_levels *K, const hg_phase_tables *ts, int fl)
 {
@@ -57,14 +64,14 @@ static void build_levels(hg_pt_levels *K, const hg_phase_tables *ts, int fl)
         hg_mesh_law law;
         for (lv = 0; lv < ts->n_levels; lv++) {
             const double *node = ts->t[fl * ts->n_levels + lv].mesh[i][HG_PT_K_M];
-            K->k[i][0][lv] = k[lv] = node[0];
-            K->k[i][1][lv] = node[1];
+            k[lv] = node[0];
             dk[lv] = node[1] * PER_W_MESH;
         }
         hg_mesh_law_points(&ts->law[fl], k, dk, &law);
         for (lv = 0; lv < ts->n_levels; lv++) {
-            K->B[i][0][lv] = law.B[lv];
-            K->B[i][1][lv] = law.dB[lv] * W_MESH;
+            put(K->ln_a[i], lv, law.ln_a[lv], law.dln_a[lv]);
+            put(K->P[i], lv, law.P[lv], law.dP[lv]);
+            put(K->B[i], lv, law.B[lv], law.dB[lv]);
         }
     }
 }
@@ -179,7 +186,8 @@ void hg_phase_table_law(const hg_phase_tables *ts, int data_flank, const hg_pt_c
     const hg_pt_levels *K = &ts->k_levels[data_flank];
     int i0 = c->i % HG_PT_N_MESH, i1 = (c->i + 1) % HG_PT_N_MESH;
     law->lv = &ts->law[data_flank];
-    lanes(c, K->k[i0], K->k[i1], law->k, law->dk);
+    lanes(c, K->ln_a[i0], K->ln_a[i1], law->ln_a, law->dln_a);
+    lanes(c, K->P[i0], K->P[i1], law->P, law->dP);
     lanes(c, K->B[i0], K->B[i1], law->B, law->dB);
 }
 

@@ -42,14 +42,15 @@ typedef struct {
     double a0, b0, a1, b1, da0, db0, da1, db1;
 } hg_pt_cell;
 
-/* The force law of one flank at each mesh node, the levels side by side (value, and slope times
- * the node spacing, as in hg_phase_table.mesh): every level's k_m, and the law's energy at its
- * point (hg_mesh_law.B, from the node's k_m in closed form), interpolated lane by lane (the
- * unused levels zero). The energies' interpolant is the law's energy between the nodes: it is
- * the law's own only at the nodes, which moves nothing but the energy audit's E_excitation and
- * E_stored (the force and its tangent come from the interpolated k_m alone). */
+/* The force law of one flank at each mesh node (hg_mesh_law's ln a_l, W_l a_l and the energy
+ * at each level's point, from the node's k_m in closed form), the levels side by side (value,
+ * and slope times the node spacing, as in hg_phase_table.mesh), interpolated lane by lane (the
+ * unused levels zero). Between the nodes the law's points are these interpolants, which differ
+ * from those of the interpolated k_m by the tables' error (tests/c/test_phase_table.c); the
+ * force stays continuous through every point (the segments end where ln a meets ln a_l). */
 typedef struct {
-    double k[HG_PT_N_MESH][2][HG_MAX_LEVELS];
+    double ln_a[HG_PT_N_MESH][2][HG_MAX_LEVELS];
+    double P[HG_PT_N_MESH][2][HG_MAX_LEVELS];
     double B[HG_PT_N_MESH][2][HG_MAX_LEVELS];
 } hg_pt_levels;
 

@@ -13,7 +13,7 @@ static const double W_L[N] = {1190.0, 2380.0, 4760.0, 9520.0, 19040.0}; /* [N] *
 /* Points on W = C a^p: k_l = W_l / a_l, a_l = (W_l / C)^(1/p); each level's k scaled by
  * (1 + e_l sin theta) to make the law depend on the mesh angle. */
 /* Approach of level l's point. */
-static double a_of(const hg_mesh_law *law, int l) { return W_L[l] / law->k[l]; }
+static double a_of(const hg_mesh_law *law, int l) { return exp(law->ln_a[l]); }
 
 static void law_at(double theta, double C, double p, const double e[N], hg_mesh_law *law)
 {

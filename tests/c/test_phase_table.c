@@ -50,7 +50,7 @@ static void compare_law(const hg_gearset *g, const hg_phase_tables *ts, int fl, 
     for (l = 0; l < g->n_levels; l++)
         for (i = 0; i < 3; i++) {
             hg_law_force t, s;
-            double a = at[i] * lv.W[l] / ls.k[l];
+            double a = at[i] * exp(ls.ln_a[l]);
             hg_mesh_law_force(&lt, a, &t);
             hg_mesh_law_force(&ls, a, &s);
             worst[0] = fmax(worst[0], fabs(t.W - s.W) / s.W);
