@@ -36,15 +36,19 @@ int hg_dyn_loaded_law(const hg_dyn_params *p)
     return p->mesh == HG_MESH_MODEL_VARYING && p->gear->n_levels > 1;
 }
 
-/* The force law of a layered file at theta on the flank in contact, the levels' stiffness from
- * the tables or the series. */
-static void loaded_law(const hg_dyn_params *p, double theta, const hg_dyn_eval *ev,
-                       hg_law_levels *lv, hg_mesh_law *law)
+/* The force law of a layered file at theta and approach a on the flank in contact, from the
+ * tables or from the series. */
+static void law_force(const hg_dyn_params *p, const hg_dyn_eval *ev, double theta, double a,
+                      hg_law_force *out)
 {
-    if (p->phase)
-        hg_phase_table_law(p->phase, ev->pick.flank, &ev->cell, law);
-    else
-        hg_mesh_law_of_series(p->gear, ev->flank, theta, lv, law);
+    hg_law_levels lv;
+    hg_mesh_law law;
+    if (p->phase) {
+        hg_phase_table_law_force(p->phase, ev->pick.flank, &ev->cell, a, out);
+        return;
+    }
+    hg_mesh_law_of_series(p->gear, ev->flank, theta, &lv, &law);
+    hg_mesh_law_force(&law, a, out);
 }
 
 /* Without backlash (or with a rigid mesh) both flanks touch: the net force loads one of them. */
@@ -57,7 +61,7 @@ static void net_force_loads(hg_dyn_eval *ev)
 /* Contact loads of the flanks. With backlash each flank carries its spring share and the damper
  * acts through its engagement (a damper between separated teeth does not act); a flank in contact
  * whose force turns tensile (teeth parting faster than the damper allows) carries no load. */
-static void flank_loads(const hg_dyn_params *p, int mode, double x, const hg_mesh_law *law,
+static void flank_loads(const hg_dyn_params *p, int mode, double x, double theta,
                         hg_dyn_eval *ev)
 {
     hg_flank_split fl;
@@ -72,8 +76,8 @@ static void flank_loads(const hg_dyn_params *p, int mode, double x, const hg_mes
     if (hg_dyn_loaded_law(p)) {
         /* the law's force through the engagement: the force of the energy U(f_d) + U(-f_b) */
         hg_law_force F_d, F_b;
-        hg_mesh_law_force(law, fl.f_d, &F_d);
-        hg_mesh_law_force(law, -fl.f_b, &F_b);
+        law_force(p, ev, theta, fl.f_d, &F_d);
+        law_force(p, ev, theta, -fl.f_b, &F_b);
         W_d = F_d.W * fl.g_d + p->c_m * fl.g_d * ev->xdot;
         W_b = -F_b.W * fl.g_b + p->c_m * fl.g_b * ev->xdot;
         ev->U_mesh = F_d.U + F_b.U;
@@ -92,8 +96,6 @@ static void flank_loads(const hg_dyn_params *p, int mode, double x, const hg_mes
 static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn_eval *ev)
 {
     double w_p = y[HG_Y_W_P], theta = p->gear->N_p * y[HG_Y_PHI_P];
-    hg_law_levels lv; /* without tables */
-    hg_mesh_law law;
     if (p->mesh == HG_MESH_MODEL_VARYING) {
         ev->flank = active_flank(p, mode, y[HG_Y_X]);
         hg_gearset_level_at(p->gear, ev->flank, y[HG_Y_T_KM], &ev->pick);
@@ -104,7 +106,6 @@ static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn
         } else {
             hg_gearset_mesh(p->gear, ev->flank, y[HG_Y_T_KM], theta, &ev->mesh);
         }
-        if (hg_dyn_loaded_law(p)) loaded_law(p, theta, ev, &lv, &law);
         ev->f = hg_backlash_f(&p->backlash, y[HG_Y_X], mode);
         ev->Phi = hg_backlash_potential(&p->backlash, y[HG_Y_X], mode);
     } else {
@@ -119,7 +120,7 @@ static void mesh_state(const hg_dyn_params *p, int mode, const double *y, hg_dyn
     if (p->mesh == HG_MESH_MODEL_RIGID) return;
     /* eq. 25: x' = R_p w_p - R_g w_g - e_0', e_0' = (de_0/dtheta) N_p w_p */
     ev->xdot = ev->mesh.R_p * w_p - ev->R_g * y[HG_Y_W_G] - ev->mesh.de_0 * p->gear->N_p * w_p;
-    flank_loads(p, mode, y[HG_Y_X], &law, ev);
+    flank_loads(p, mode, y[HG_Y_X], theta, ev);
 }
 
 /* The friction tables of the two levels b picks (built now if they are not), whether both are

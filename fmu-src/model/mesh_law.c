@@ -21,26 +21,44 @@ typedef struct {
     double p, q, dp;
 } hg_segment;
 
-static hg_segment segment(const hg_mesh_law *m, int l)
+static hg_segment segment(const hg_law_levels *lv, const hg_law_segment *sg)
 {
     hg_segment s;
-    double ln_a = m->ln_a[l + 1] - m->ln_a[l], ln_W = m->lv->ln_W[l], sum = ln_W + ln_a;
+    double ln_a = sg->ln_a1 - sg->ln_a0, ln_W = lv->ln_W[sg->l], sum = ln_W + ln_a;
     double d = 1.0 / (ln_a * sum); /* 1/ln_a = sum d, 1/(p + 1) = ln_a/sum = ln_a^2 d */
     s.p = ln_W * sum * d;
     s.q = ln_a * ln_a * d;
-    s.dp = s.p * (m->dln_a[l] - m->dln_a[l + 1]) * sum * d;
+    s.dp = s.p * (sg->dln_a0 - sg->dln_a1) * sum * d;
     return s;
 }
 
-/* Adds the energy and its dtheta of the power law of segment s from its start (point l, or a = 0
- * for the first segment) to where it carries W at a, W a changing with theta by dWa: the
- * integral (W a - W_l a_l) / (p + 1) and its derivative. */
-static void segment_energy(const hg_mesh_law *m, int l, hg_segment s, double Wa, double dWa,
+/* Adds the energy and its dtheta of the power law of segment s from its start (sg's lower point,
+ * or a = 0 for the first segment) to where it carries W at a, W a changing with theta by dWa:
+ * the integral (W a - W_l a_l) / (p + 1) and its derivative. */
+static void segment_energy(const hg_law_segment *sg, hg_segment s, double Wa, double dWa,
                            double *U, double *dU)
 {
-    double P_l = l > 0 ? m->P[l] : 0.0, dP_l = l > 0 ? m->dP[l] : 0.0, E = Wa - P_l;
+    double E = Wa - sg->P;
     *U += E * s.q;
-    *dU += (dWa - dP_l) * s.q - E * s.dp * s.q * s.q;
+    *dU += (dWa - sg->dP) * s.q - E * s.dp * s.q * s.q;
+}
+
+/* Segment l of the law m (beyond its last point when `beyond`). */
+static hg_law_segment segment_of(const hg_mesh_law *m, int l, int beyond)
+{
+    hg_law_segment sg;
+    int base = beyond ? l + 1 : l;
+    sg.l = l;
+    sg.beyond = beyond;
+    sg.ln_a0 = m->ln_a[l];
+    sg.dln_a0 = m->dln_a[l];
+    sg.ln_a1 = m->ln_a[l + 1];
+    sg.dln_a1 = m->dln_a[l + 1];
+    sg.P = l > 0 ? m->P[l] : 0.0;
+    sg.dP = l > 0 ? m->dP[l] : 0.0;
+    sg.B = m->B[base];
+    sg.dB = m->dB[base];
+    return sg;
 }
 
 void hg_mesh_law_points(const hg_law_levels *lv, const double k[], const double dk[],
@@ -57,52 +75,69 @@ void hg_mesh_law_points(const hg_law_levels *lv, const double k[], const double 
     }
     law->B[0] = law->dB[0] = 0.0;
     for (l = 0; l + 1 < lv->n; l++) { /* segment by segment, each up to its upper point */
+        hg_law_segment sg = segment_of(law, l, 0);
         law->B[l + 1] = law->B[l];
         law->dB[l + 1] = law->dB[l];
-        segment_energy(law, l, segment(law, l), law->P[l + 1], law->dP[l + 1], &law->B[l + 1],
+        segment_energy(&sg, segment(lv, &sg), law->P[l + 1], law->dP[l + 1], &law->B[l + 1],
                        &law->dB[l + 1]);
     }
 }
 
+int hg_mesh_law_locate(const hg_law_levels *lv, const double ln_a[], double ln_a_x, int *beyond)
+{
+    int l = 0, last = lv->n - 2;
+    while (l < last && ln_a_x > ln_a[l + 1]) l++; /* the segment whose power law applies */
+    *beyond = ln_a_x > ln_a[last + 1];
+    return l;
+}
+
+void hg_mesh_law_segment_force(const hg_law_levels *lv, const hg_law_segment *sg, double a,
+                               double ln_a, hg_law_force *out)
+{
+    hg_segment s = segment(lv, sg);
+    double L, dlnW, U = sg->B, dU = sg->dB;
+    if (sg->beyond) { /* beyond the last level: its tangent */
+        double W_e = lv->W[sg->l + 1], a_e = exp(sg->ln_a1), d = a - a_e;
+        double da_e = a_e * sg->dln_a1, k_e = s.p * W_e / a_e;
+        double dk_e = k_e * (s.dp / s.p - sg->dln_a1);
+        out->W = W_e + k_e * d;
+        out->k = k_e;
+        out->U = U + W_e * d + 0.5 * k_e * d * d;
+        out->dU = dU - W_e * da_e + 0.5 * dk_e * d * d - k_e * d * da_e;
+        return;
+    }
+    L = ln_a - sg->ln_a0;
+    out->W = lv->W[sg->l] * exp(s.p * L);
+    out->k = s.p * out->W / a;
+    dlnW = s.dp * L - s.p * sg->dln_a0;
+    segment_energy(sg, s, out->W * a, out->W * dlnW * a, &U, &dU);
+    out->U = U;
+    out->dU = dU;
+}
+
 void hg_mesh_law_force(const hg_mesh_law *m, double a, hg_law_force *out)
 {
-    hg_segment s;
-    int l = 0, last = m->lv->n - 2;
-    double ln_a, L, dlnW, U, dU;
+    hg_law_segment sg;
+    double ln_a;
+    int l, beyond;
     memset(out, 0, sizeof *out);
     if (!(a > 0.0)) return;
     ln_a = log(a);
-    while (l < last && ln_a > m->ln_a[l + 1]) l++; /* the segment whose power law applies */
-    s = segment(m, l);
-    if (ln_a > m->ln_a[last + 1]) { /* beyond the last level: its tangent */
-        double W_e = m->lv->W[last + 1], a_e = exp(m->ln_a[last + 1]), d = a - a_e;
-        double da_e = a_e * m->dln_a[last + 1], k_e = s.p * W_e / a_e;
-        double dk_e = k_e * (s.dp / s.p - m->dln_a[last + 1]);
-        out->W = W_e + k_e * d;
-        out->k = k_e;
-        out->U = m->B[last + 1] + W_e * d + 0.5 * k_e * d * d;
-        out->dU = m->dB[last + 1] - W_e * da_e + 0.5 * dk_e * d * d - k_e * d * da_e;
-        return;
-    }
-    L = ln_a - m->ln_a[l];
-    out->W = m->lv->W[l] * exp(s.p * L);
-    out->k = s.p * out->W / a;
-    dlnW = s.dp * L - s.p * m->dln_a[l];
-    U = m->B[l];
-    dU = m->dB[l];
-    segment_energy(m, l, s, out->W * a, out->W * dlnW * a, &U, &dU);
-    out->U = U;
-    out->dU = dU;
+    l = hg_mesh_law_locate(m->lv, m->ln_a, ln_a, &beyond);
+    sg = segment_of(m, l, beyond);
+    hg_mesh_law_segment_force(m->lv, &sg, a, ln_a, out);
 }
 
 double hg_mesh_law_approach(const hg_mesh_law *m, double W)
 {
     const hg_law_levels *lv = m->lv;
     int l = 0, last = lv->n - 2;
+    hg_law_segment sg;
     hg_segment s;
     if (!(W > 0.0)) return 0.0;
     while (l < last && W > lv->W[l + 1]) l++;
-    s = segment(m, l);
+    sg = segment_of(m, l, 0);
+    s = segment(lv, &sg);
     if (W > lv->W[last + 1]) { /* beyond the last level */
         double a_e = exp(m->ln_a[last + 1]);
         return a_e + (W - lv->W[last + 1]) * a_e / (s.p * lv->W[last + 1]);

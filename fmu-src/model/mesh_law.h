@@ -55,6 +55,25 @@ typedef struct {
 /* The law at approach a [m]; all zero for a <= 0 (the teeth apart). */
 void hg_mesh_law_force(const hg_mesh_law *law, double a, hg_law_force *out);
 
+/* The segment an approach falls in, what an evaluation there needs: its points' ln a_l and
+ * d/dtheta, W_l a_l of its lower point and the energy where its own part starts (its lower
+ * point; the last point beyond it), each with its d/dtheta. */
+typedef struct {
+    int l;      /* between points l and l + 1 (l = n - 2 also beyond the last point) */
+    int beyond; /* the approach lies beyond the last point: its tangent */
+    double ln_a0, dln_a0, ln_a1, dln_a1;
+    double P, dP; /* W_l a_l (0 for the first segment, whose energy counts from a = 0) */
+    double B, dB; /* energy at point l, or at the last point when beyond [J] */
+} hg_law_segment;
+
+/* The segment of an approach of logarithm ln_a among the points' ln_a[] of lv: l, and whether
+ * it lies beyond the last point. */
+int hg_mesh_law_locate(const hg_law_levels *lv, const double ln_a[], double ln_a_x, int *beyond);
+
+/* The law at approach a > 0 [m] (ln_a its logarithm) in the segment sg. */
+void hg_mesh_law_segment_force(const hg_law_levels *lv, const hg_law_segment *sg, double a,
+                               double ln_a, hg_law_force *out);
+
 /* The approach [m] at which the law carries the load W >= 0 [N] (the law's inverse). */
 double hg_mesh_law_approach(const hg_mesh_law *law, double W);
 

@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define TWO_PI 6.283185307179586
 
@@ -166,29 +167,36 @@ void hg_phase_table_mesh(const hg_phase_tables *ts, const hg_level_pick *b, cons
     out->R_p = blend(out->R_p, hi.R_p, b->w); /* e_0: one series for every flank and level */
 }
 
-/* Values v and d/dtheta dv of every lane of the nodes n0, n1 at the cell c (value() and slope()
- * lane by lane). */
-static void lanes(const hg_pt_cell *c, const double (*n0)[HG_MAX_LEVELS],
-                  const double (*n1)[HG_MAX_LEVELS], double *restrict v, double *restrict dv)
+/* Value v and d/dtheta dv of lane l of the nodes n0, n1 at the cell c (value() and slope()). */
+static void lane(const hg_pt_cell *c, const double (*n0)[HG_MAX_LEVELS],
+                 const double (*n1)[HG_MAX_LEVELS], int l, double *v, double *dv)
 {
-    double a0 = c->a0, b0 = c->b0, a1 = c->a1, b1 = c->b1;
-    double da0 = c->da0, db0 = c->db0, da1 = c->da1, db1 = c->db1;
-    int l;
-    for (l = 0; l < HG_MAX_LEVELS; l++) {
-        v[l] = a0 * n0[0][l] + b0 * n0[1][l] + a1 * n1[0][l] + b1 * n1[1][l];
-        dv[l] = (da0 * n0[0][l] + db0 * n0[1][l] + da1 * n1[0][l] + db1 * n1[1][l]) * PER_W_MESH;
-    }
+    *v = c->a0 * n0[0][l] + c->b0 * n0[1][l] + c->a1 * n1[0][l] + c->b1 * n1[1][l];
+    *dv = (c->da0 * n0[0][l] + c->db0 * n0[1][l] + c->da1 * n1[0][l] + c->db1 * n1[1][l]) *
+          PER_W_MESH;
 }
 
-void hg_phase_table_law(const hg_phase_tables *ts, int data_flank, const hg_pt_cell *c,
-                        hg_mesh_law *law)
+void hg_phase_table_law_force(const hg_phase_tables *ts, int data_flank, const hg_pt_cell *c,
+                              double a, hg_law_force *out)
 {
     const hg_pt_levels *K = &ts->k_levels[data_flank];
-    int i0 = c->i % HG_PT_N_MESH, i1 = (c->i + 1) % HG_PT_N_MESH;
-    law->lv = &ts->law[data_flank];
-    lanes(c, K->ln_a[i0], K->ln_a[i1], law->ln_a, law->dln_a);
-    lanes(c, K->P[i0], K->P[i1], law->P, law->dP);
-    lanes(c, K->B[i0], K->B[i1], law->B, law->dB);
+    const hg_law_levels *lv = &ts->law[data_flank];
+    int i0 = c->i % HG_PT_N_MESH, i1 = (c->i + 1) % HG_PT_N_MESH, l;
+    double ln_a[HG_MAX_LEVELS], dln_a[HG_MAX_LEVELS], ln_ax;
+    hg_law_segment sg;
+    memset(out, 0, sizeof *out);
+    if (!(a > 0.0)) return;
+    ln_ax = log(a);
+    for (l = 0; l < lv->n; l++) lane(c, K->ln_a[i0], K->ln_a[i1], l, &ln_a[l], &dln_a[l]);
+    sg.l = l = hg_mesh_law_locate(lv, ln_a, ln_ax, &sg.beyond);
+    sg.ln_a0 = ln_a[l];
+    sg.dln_a0 = dln_a[l];
+    sg.ln_a1 = ln_a[l + 1];
+    sg.dln_a1 = dln_a[l + 1];
+    sg.P = sg.dP = 0.0;
+    if (l > 0) lane(c, K->P[i0], K->P[i1], l, &sg.P, &sg.dP);
+    lane(c, K->B[i0], K->B[i1], sg.beyond ? l + 1 : l, &sg.B, &sg.dB);
+    hg_mesh_law_segment_force(lv, &sg, a, ln_ax, out);
 }
 
 /* The pairs' values of one table, the load shares before clamping. */

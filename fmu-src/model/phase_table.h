@@ -79,8 +79,9 @@ void hg_phase_table_pairs(const hg_phase_tables *ts, const hg_level_pick *b, con
                           int with_contact, hg_pair_geometry *out);
 
 /* The force law of a layered file (model/mesh_law.h) on the data's flank (hg_level_pick.flank)
- * at the cell of theta: every level's k_m and dk_m/dtheta from its table. */
-void hg_phase_table_law(const hg_phase_tables *ts, int data_flank, const hg_pt_cell *c,
-                        hg_mesh_law *law);
+ * at the cell of theta and approach a [m], from the nodes (hg_pt_levels): every level's ln a_l
+ * to find the segment, W_l a_l and the energy of that segment's point alone. */
+void hg_phase_table_law_force(const hg_phase_tables *ts, int data_flank, const hg_pt_cell *c,
+                              double a, hg_law_force *out);
 
 #endif

@@ -41,17 +41,16 @@ static void compare_law(const hg_gearset *g, const hg_phase_tables *ts, int fl, 
 {
     static const double at[] = {0.4, 1.0, 1.3};
     hg_law_levels lv;
-    hg_mesh_law lt, ls;
+    hg_mesh_law ls;
     hg_level_pick b;
     int l, i;
     hg_gearset_level_at(g, fl, 0.0, &b);
-    hg_phase_table_law(ts, b.flank, cell, &lt);
     hg_mesh_law_of_series(g, fl, theta, &lv, &ls);
     for (l = 0; l < g->n_levels; l++)
         for (i = 0; i < 3; i++) {
             hg_law_force t, s;
             double a = at[i] * exp(ls.ln_a[l]);
-            hg_mesh_law_force(&lt, a, &t);
+            hg_phase_table_law_force(ts, b.flank, cell, a, &t);
             hg_mesh_law_force(&ls, a, &s);
             worst[0] = fmax(worst[0], fabs(t.W - s.W) / s.W);
             worst[1] = fmax(worst[1], fabs(t.dU - s.dU) / s.U);
