@@ -121,8 +121,8 @@ static void compare(const char *path, double bound_v, double bound_d, double bou
     for (fl = 0; fl < HG_N_FLANKS; fl++)
         for (i = 0; i < (int)(sizeof T / sizeof T[0]); i++) compare_at(&g, &ts, fl, T[i], worst);
     printf("%s (%d flank(s), %d level(s)): mesh values %.1e, mesh slopes %.1e, pair data %.1e of "
-           "the ripple; law: W %.1e of W, U and dU/dtheta %.1e of U\n", path, g.n_flanks, g.n_levels,
-           worst[0], worst[1], worst[2], worst[3], worst[4]);
+           "the ripple; law: W %.1e of W, U and dU/dtheta %.1e of U\n", path, g.n_flanks,
+           g.n_levels, worst[0], worst[1], worst[2], worst[3], worst[4]);
     CHECK(worst[0] < bound_v && worst[1] < bound_d && worst[2] < bound_pair);
     CHECK(worst[3] <= bound_W && worst[4] <= bound_dU);
     hg_phase_tables_free(&ts);
