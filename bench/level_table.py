@@ -186,7 +186,7 @@ def bounds_sentence(data):
             f"{', '.join(eta)}")
     said += (f", and the compliant ones within {DTE_BOUND_UM} µm of DTE p-p" if not dte_ else
              f"; beyond {DTE_BOUND_UM} µm of DTE p-p: {', '.join(dte_)}")
-    return (said + ", in all five scenes (design 2000 rpm, off resonance, mode-2 resonance with "
+    return (said + ", in all five scenes (design 2000 rpm, off resonance, mode-3 resonance with "
             "tooth separation, torque reversal, −20 °C cold start).")
 
 

@@ -44,6 +44,8 @@ SCENARIOS = {
     # the paper's calibrated mode 2 (the loaded files' stiffer mesh keeps the teeth together)
     "set1_os962_50Nm_1200rpm_contact_loss": {"T_s": 50.0, SPEED_KEY: 1200.0,
                                              "tooth_data": "paper"},
+    # the default (loaded) data's mode 3 at 50 N.m: the teeth apart a quarter of the time
+    "set1_os962_50Nm_2300rpm_contact_loss": {"T_s": 50.0, SPEED_KEY: 2300.0},
     "set1_os963_300Nm_1000rpm": {"lubricant": 2, "T_s": 300.0, SPEED_KEY: 1000.0},
     "set2_os962_100Nm_3000rpm_bath80C": {"gear_set": 2, "T_s": 100.0, SPEED_KEY: 3000.0,
                                          "T_bath": 353.15},

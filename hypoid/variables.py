@@ -11,7 +11,7 @@ from typing import NamedTuple
 
 MODEL_NAME = 'HypoidGearPair'
 MODEL_VERSION = '0.1.0'
-GUID = '{3ebbfa08-985b-5f79-a4fe-ef5c1a82cda8}'
+GUID = '{9dc7990d-70b7-5058-8a88-cb9b5bb2dced}'
 
 
 class Variable(NamedTuple):
@@ -124,7 +124,7 @@ _TABLE = (
     Variable(name='E_bearings', vr=87, causality='output', variability='continuous', type='Real', enumeration=None, unit='J', display_unit=None, start=None, min=None, max=None, description='bearing friction energy since the start'),
     Variable(name='E_seals', vr=88, causality='output', variability='continuous', type='Real', enumeration=None, unit='J', display_unit=None, start=None, min=None, max=None, description='seal friction energy since the start'),
     Variable(name='gear_set', vr=89, causality='parameter', variability='fixed', type='Integer', enumeration=None, unit=None, display_unit=None, start=1, min=1, max=3, description="built-in gear set of the paper's Table 1; tooth_data says which tooth-contact data it uses"),
-    Variable(name='tooth_data', vr=90, causality='parameter', variability='fixed', type='Enumeration', enumeration='tooth_data', unit=None, display_unit=None, start=2, min=1, max=2, description="tooth-contact data of the built-in gear set: loaded (load-dependent, both flanks) or the paper's calibrated one series (docs/data-files.md); ignored with gear_set_file"),
+    Variable(name='tooth_data', vr=90, causality='parameter', variability='fixed', type='Enumeration', enumeration='tooth_data', unit=None, display_unit=None, start=1, min=1, max=2, description="tooth-contact data of the built-in gear set: loaded (load-dependent, both flanks) or the paper's calibrated one series (docs/data-files.md); ignored with gear_set_file"),
     Variable(name='gear_set_file', vr=91, causality='parameter', variability='fixed', type='String', enumeration=None, unit=None, display_unit=None, start='', min=None, max=None, description='gear-set data file (absolute, or relative to the resources folder); overrides gear_set when not empty'),
     Variable(name='lubricant', vr=92, causality='parameter', variability='fixed', type='Integer', enumeration=None, unit=None, display_unit=None, start=1, min=1, max=2, description='built-in lubricant: 1 = OS265962, 2 = OS265963 (paper Table 2)'),
     Variable(name='lubricant_file', vr=93, causality='parameter', variability='fixed', type='String', enumeration=None, unit=None, display_unit=None, start='', min=None, max=None, description='lubricant data file (absolute, or relative to the resources folder); overrides lubricant when not empty'),
