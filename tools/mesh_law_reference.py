@@ -12,7 +12,7 @@ mesh force W(x − b, θ) itself. The same model runs with the force laws an FMU
               level's static state, contact where the tangent line crosses zero
     powerlaw  W instantaneous between the levels' static points (a_l, W_l) = (W_l/k_s, W_l),
               W = W_l (a/a_l)^p_l with p_l = ln(W_(l+1)/W_l)/ln(a_(l+1)/a_l) (the FMU's law
-              from session 5 on, fmu-src/model/mesh_law.c)
+              from session 5 on, fmu-src/mesh/mesh_law.c)
 
 T_km is the transmitted torque filtered over three mesh periods, as in the FMU. Everything else
 (R_p(θ) and e_0(θ) of the gear-set file's level, the dampers, the inertias and shaft

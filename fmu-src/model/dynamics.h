@@ -6,14 +6,14 @@
 #define HG_DYNAMICS_H
 
 #include "hg_vars.h" /* hg_inputs: the FMU inputs at the evaluation time */
-#include "model/backlash.h"
+#include "mesh/backlash.h"
 #include "model/effmap.h"
 #include "model/friction.h"
 #include "model/friction_table.h"
-#include "model/phase_table.h"
-#include "model/gearset.h"
+#include "mesh/phase_table.h"
+#include "mesh/gearset.h"
 #include "model/ledger.h"
-#include "model/mesh_law.h"
+#include "mesh/mesh_law.h"
 
 enum {
     HG_Y_TWIST1, /* phi_s - phi_p [rad] */
@@ -108,7 +108,7 @@ double hg_dyn_oil_temperature(const hg_dyn_params *p, const hg_inputs *u, const 
 void hg_dyn_derivatives(const hg_dyn_params *p, const hg_inputs *u, const double *y,
                         const hg_dyn_eval *ev, double *ydot);
 
-/* Whether the mesh force follows the layered file's force law (model/mesh_law.h) instead of
+/* Whether the mesh force follows the layered file's force law (mesh/mesh_law.h) instead of
  * k_m f(x): the varying mesh with tooth data of several torque levels. */
 int hg_dyn_loaded_law(const hg_dyn_params *p);
 

@@ -16,7 +16,7 @@
 #define HG_FRICTION_TABLE_H
 
 #include "model/friction.h"
-#include "model/gearset.h"
+#include "mesh/gearset.h"
 
 /* phases over the load-share period: a multiple of 3, so that the three pairs, a third of the
  * period apart, fall on the same fraction of their cells (hg_friction_table_pairs) */

@@ -5,8 +5,6 @@
 #ifndef HG_PAIR_CONTACT_H
 #define HG_PAIR_CONTACT_H
 
-#define HG_MAX_PAIRS 3
-
 typedef struct {
     double W;      /* normal load carried by the pair [N], >= 0 */
     double u_p[2]; /* pinion surface velocity relative to the contact point (x, y) [m/s] */

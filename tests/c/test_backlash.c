@@ -3,7 +3,7 @@
 #include <math.h>
 
 #include "check.h"
-#include "model/backlash.h"
+#include "mesh/backlash.h"
 
 static void exact(void)
 {

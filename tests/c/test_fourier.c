@@ -3,7 +3,7 @@
 #include <math.h>
 
 #include "check.h"
-#include "model/fourier.h"
+#include "mesh/fourier.h"
 
 static double direct(const hg_series *y, double psi)
 {

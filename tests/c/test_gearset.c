@@ -5,7 +5,7 @@
 
 #include "check.h"
 #include "io/datafile.h"
-#include "model/gearset.h"
+#include "mesh/gearset.h"
 
 #define TWO_PI 6.283185307179586
 

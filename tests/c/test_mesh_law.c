@@ -1,11 +1,11 @@
-/* The force law of a loaded mesh (model/mesh_law.h): levels on one power law W = C a^p give it
+/* The force law of a loaded mesh (mesh/mesh_law.h): levels on one power law W = C a^p give it
  * back exactly (force, tangent p W/a, energy C a^(p+1)/(p+1)); the energy's derivatives by
  * central differences (dU/da = W, dW/da = k, dU/dtheta at fixed a with k_m,l varying in theta);
  * the energy against the quadrature of W; the tangent beyond the last level; the inverse. */
 #include <math.h>
 
 #include "check.h"
-#include "model/mesh_law.h"
+#include "mesh/mesh_law.h"
 
 #define N 5
 static const double W_L[N] = {1190.0, 2380.0, 4760.0, 9520.0, 19040.0}; /* [N] */

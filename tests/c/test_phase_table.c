@@ -9,7 +9,7 @@
 
 #include "check.h"
 #include "io/datafile.h"
-#include "model/phase_table.h"
+#include "mesh/phase_table.h"
 
 #define TWO_PI 6.283185307179586
 #define N_POINTS 3001

@@ -1,5 +1,5 @@
 """The force law of the loaded (layered) tooth data (docs/physics.md §10.8, "In the FMU";
-fmu-src/model/mesh_law.c): the mesh force follows the loaded contact's W(δ) instantaneously,
+fmu-src/mesh/mesh_law.c): the mesh force follows the loaded contact's W(δ) instantaneously,
 through the levels' static points. Checked against the loaded contact model itself: the stiffness
 a vibration sees is the contact's tangent dW/dδ (not the secant the files hold), the static
 transmission error is the contact's, and the DTE at and off the mode-3 resonance is that of the

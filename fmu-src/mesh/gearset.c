@@ -1,6 +1,6 @@
 /* Gear-set data: reading, checking and evaluating the Fourier series (paper eqs. 1-4), per flank
  * and torque level (docs/data-files.md, docs/physics.md §10.8). */
-#include "model/gearset.h"
+#include "mesh/gearset.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -175,7 +175,7 @@ static int check_block(const char *path, const char *where, const hg_flank_serie
     return 0;
 }
 
-/* The levels of a layered flank are the static points of the mesh's force law (model/mesh_law.h):
+/* The levels of a layered flank are the static points of the mesh's force law (mesh/mesh_law.h):
  * their loads W_l = T_l / mean R_p,l and deflections W_l / k_m,l must both grow with the level. */
 static int check_deflections(const char *path, const hg_gearset *g, int fl, char *err,
                              size_t errlen)

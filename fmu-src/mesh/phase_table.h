@@ -11,8 +11,8 @@
 #ifndef HG_PHASE_TABLE_H
 #define HG_PHASE_TABLE_H
 
-#include "model/gearset.h"
-#include "model/mesh_law.h"
+#include "mesh/gearset.h"
+#include "mesh/mesh_law.h"
 
 #define HG_PT_N_MESH 256 /* nodes over one mesh cycle (theta) */
 /* Nodes over one load-share period (psi = (theta + 2 pi k) / 3): three times the mesh's, so that
@@ -78,7 +78,7 @@ void hg_phase_table_mesh(const hg_phase_tables *ts, const hg_level_pick *b, cons
 void hg_phase_table_pairs(const hg_phase_tables *ts, const hg_level_pick *b, const hg_pt_cell *c,
                           int with_contact, hg_pair_geometry *out);
 
-/* The force law of a layered file (model/mesh_law.h) on the data's flank (hg_level_pick.flank)
+/* The force law of a layered file (mesh/mesh_law.h) on the data's flank (hg_level_pick.flank)
  * at the cell of theta and approach a [m], from the nodes (hg_pt_levels): every level's ln a_l
  * to find the segment, W_l a_l and the energy of that segment's point alone. */
 void hg_phase_table_law_force(const hg_phase_tables *ts, int data_flank, const hg_pt_cell *c,

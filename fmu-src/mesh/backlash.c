@@ -1,5 +1,5 @@
 /* Backlash dead zone, exact and smoothed: see backlash.h. */
-#include "model/backlash.h"
+#include "mesh/backlash.h"
 
 #include <math.h>
 

@@ -1,5 +1,5 @@
 /* Tabulated gear-set series: see phase_table.h. */
-#include "model/phase_table.h"
+#include "mesh/phase_table.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -11,7 +11,7 @@
 #ifndef HG_MESH_LAW_H
 #define HG_MESH_LAW_H
 
-#include "model/gearset.h"
+#include "mesh/gearset.h"
 
 /* What of the law is constant for a run: the levels' loads and the logarithms of their ratios
  * (the exponents' numerators), computed once per gear set (hg_mesh_law_levels_of). */

@@ -1,5 +1,5 @@
 /* The force law of a loaded mesh: see mesh_law.h. */
-#include "model/mesh_law.h"
+#include "mesh/mesh_law.h"
 
 #include <math.h>
 #include <string.h>

@@ -5,9 +5,9 @@
 
 #include <stddef.h>
 
-#include "model/fourier.h"
-#include "tribo/pair_contact.h"
+#include "mesh/fourier.h"
 
+#define HG_MAX_PAIRS 3  /* tooth pairs in mesh at once (the load-share series, pairs k = 0, 1, 2) */
 #define HG_MAX_LEVELS 8 /* torque levels a gear-set file may hold */
 enum { HG_FLANK_DRIVE, HG_FLANK_COAST, HG_N_FLANKS };
 

@@ -1,5 +1,5 @@
 /* Fourier series evaluation with the angle-addition recurrence: see fourier.h. */
-#include "model/fourier.h"
+#include "mesh/fourier.h"
 
 #include <math.h>
 
