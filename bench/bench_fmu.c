@@ -21,7 +21,7 @@
  * the level's first row (the same run).
  *
  * The scene is the FMU's default: gear set 1, OS265962, 2000 rpm held by the speed governor,
- * T_s = 100 N m, 40 degC. The level parameters are those of hypoid/levels.py. Each batch
+ * T_s = 100 N m, 40 degC. The level parameters are those of hypoid/fmu/levels.py. Each batch
  * continues the same instance (steady operation after the start-up); the figures are medians
  * over the batches. Real-time factor = simulated seconds / CPU seconds of the fmi2DoStep and
  * fmi2GetReal calls. */

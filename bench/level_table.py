@@ -191,7 +191,7 @@ def bounds_sentence(data):
 
 
 def readme_with(text, data):
-    from hypoid import docblocks
+    from hypoid.records import docblocks
 
     return docblocks.replace_required(text, BEGIN, END, table(data), "level_table: the README")
 
@@ -215,7 +215,7 @@ def main():
     data = json.loads(DATA.read_text())
     readme = pathlib.Path(args.file)
     text = readme.read_text()
-    from hypoid import docblocks
+    from hypoid.records import docblocks
 
     return docblocks.write_or_check(readme, readme_with(text, data), args.check,
                                     f"the per-level table against {DATA.relative_to(ROOT)}",

@@ -11,7 +11,7 @@ import os
 import statistics
 import time
 
-from hypoid.instance import Instance, unzipped
+from hypoid.fmu.instance import Instance, unzipped
 
 SCENES = {
     "varying, 2000 rpm, 100 N.m (steady meshing)": {},

@@ -26,10 +26,10 @@ from dataclasses import dataclass, field
 import numpy as np
 from fmpy.fmi1 import FMICallException as _RawCallError
 
-from hypoid import instance as hypoid_instance
-from hypoid.instance import FmuError, unzipped
-from hypoid.levels import LEVELS as _LEVELS
-from hypoid.values import RPM
+from hypoid.fmu import instance as hypoid_instance
+from hypoid.fmu.instance import FmuError, unzipped
+from hypoid.fmu.levels import LEVELS as _LEVELS
+from hypoid.fmu.values import RPM
 
 FMICallException = (_RawCallError, FmuError)  # a failed call, raw (inst.s) or through Instance
 COMM = 0.05          # [s] communication step of the timed runs (window bounds are multiples)
@@ -154,7 +154,7 @@ def scenes(resonance_rpm=RESONANCE_RPM):
 
 
 class Fmu:
-    """The FMU unzipped once per content (hypoid.instance's cache, so other engineers may
+    """The FMU unzipped once per content (hypoid.fmu.instance's cache, so other engineers may
     rebuild build/HypoidGearPair.fmu while the benchmark runs)."""
 
     def __init__(self, path, map_file=None):
@@ -174,7 +174,7 @@ class RunError(Exception):
 
 
 class Instance(hypoid_instance.Instance):
-    """hypoid.instance.Instance with the benchmark's names: `s` the raw slave, init/free."""
+    """hypoid.fmu.instance.Instance with the benchmark's names: `s` the raw slave, init/free."""
 
     def __init__(self, fmu, name="wp"):
         super().__init__(fmu.dir, name=name)

@@ -10,7 +10,7 @@
 # the kernel (the test extras bring the kernel, `ipykernel`; a front end such as JupyterLab or
 # VS Code is the user's choice and not pinned here).
 #
-# The FMU is reached through `hypoid.instance.Instance`, the `hypoid` package's access layer
+# The FMU is reached through `hypoid.fmu.instance.Instance`, the `hypoid` package's access layer
 # (over fmpy): values by name, enumerations by item name (`load_mode="speed"`), `speed_rpm` for
 # the speed set-point and the initial speed together, one instance restarted for each
 # experiment. Values are SI at the FMU's interface: N·m, rad/s, K, m.
@@ -27,7 +27,7 @@ if "ipykernel" not in sys.modules:
     matplotlib.use("Agg")  # a plain script: figures go to files only
 import matplotlib.pyplot as plt  # noqa: E402
 
-from hypoid.instance import RPM, Instance  # noqa: E402
+from hypoid.fmu.instance import RPM, Instance  # noqa: E402
 
 
 def find_fmu():

@@ -29,7 +29,7 @@ import math
 import os
 import sys
 
-from hypoid import cliargs
+from hypoid.cli import args as cliargs
 
 C0 = 273.15  # K at 0 degC
 T_THIRD = 150.0  # degC, third point of the Vogel fit

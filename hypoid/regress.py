@@ -29,10 +29,11 @@ import pathlib
 import sys
 import tomllib
 
-from hypoid import cliargs, metrics, steady
-from hypoid.instance import RPM, SPEED_KEY, Instance
+from hypoid.cli import args as cliargs
+from hypoid.study import metrics, steady
+from hypoid.fmu.instance import RPM, SPEED_KEY, Instance
 from hypoid.paths import user_path
-from hypoid.values import TABLE
+from hypoid.fmu.values import TABLE
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 REF_DIR = ROOT / "tests" / "regression"

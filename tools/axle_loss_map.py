@@ -1,4 +1,4 @@
-"""The axle's loss map (hypoid.lossmap): the parts of P_axle (mesh, churning, bearings, seals)
+"""The axle's loss map (hypoid.maps.lossmap): the parts of P_axle (mesh, churning, bearings, seals)
 and eta_axle over pinion speed x input torque at fixed oil temperatures. Writes
 docs/figures/axle_loss_map.png and prints a markdown table (docs/axle.md).
 
@@ -12,7 +12,9 @@ import sys
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from hypoid import lossmap, parallel, plots  # noqa: E402
+from hypoid.maps import lossmap  # noqa: E402
+from hypoid.fmu import parallel
+from hypoid.study import plots
 
 
 def main():

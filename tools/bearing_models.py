@@ -24,7 +24,7 @@ import sys
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from hypoid.variables import VARIABLES  # noqa: E402
+from hypoid.fmu.variables import VARIABLES  # noqa: E402
 
 # The pairs: bearings (FMU name: d, D [mm] of the catalogue size), SKF series constants, the
 # preload parameter and the shaft's speed per pinion speed (gear set 1, 13:36). Pinion: 32308

@@ -34,8 +34,8 @@ import sys
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from hypoid import docblocks  # noqa: E402
-from hypoid.instance import SPEED_KEY, Instance  # noqa: E402
+from hypoid.records import docblocks  # noqa: E402
+from hypoid.fmu.instance import SPEED_KEY, Instance  # noqa: E402
 from hypoid.regress import run_scenario  # noqa: E402
 
 OILS = {1: "OS265962", 2: "OS265963"}

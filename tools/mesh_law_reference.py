@@ -1,6 +1,6 @@
 """Reference for the mesh force law of the loaded tooth data (docs/physics.md §10.8, "In the FMU").
 
-The loaded contact of hypoid.tca_loaded gives, at every mesh angle θ, the normal load W that the
+The loaded contact of hypoid.tca.loaded gives, at every mesh angle θ, the normal load W that the
 teeth carry at a mesh approach a = δ − e_u beyond first touch: W(a, θ), tabulated here finely in a
 and θ. An elastic contact follows this law at once (its footprint settles with the elastic waves,
 in microseconds, against mesh periods of milliseconds), so the reference integrates the paper's
@@ -49,10 +49,11 @@ import numpy as np
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from hypoid import docblocks, tca  # noqa: E402
-from hypoid import tca_loaded as tl  # noqa: E402
-from hypoid import tca_surrogate as sur  # noqa: E402
-from hypoid.gearset_file import read_gearset  # noqa: E402
+from hypoid.records import docblocks  # noqa: E402
+from hypoid.tca import gearsets as tca
+from hypoid.tca import loaded as tl  # noqa: E402
+from hypoid.tca import surrogate as sur  # noqa: E402
+from hypoid.tca.gearset_file import read_gearset  # noqa: E402
 
 TABLE3 = {"I_s": 0.014, "I_p": 0.014, "I_g": 0.29, "I_w": 0.29, "k_t1": 8e5, "k_t2": 8e5}
 B_HALF = 70e-6  # half backlash [m]
@@ -278,7 +279,7 @@ def fmu_start(torque, rpm, path):
 def fmu_sweep(fmu, path, torque, speeds, t_end=0.3, t_keep=0.1, h=1e-5):
     """The FMU at each speed (steps of h, the last t_keep analysed), and what it computed at the
     start: its dampers and the modal k_m0 and f_3."""
-    from hypoid.instance import Instance
+    from hypoid.fmu.instance import Instance
 
     with Instance(fmu, name="mesh_law_reference") as gear:
         gear.start(fmu_start(torque, speeds[0], path))

@@ -10,7 +10,7 @@ docs/paper-findings.json and written from it between the page's generated-block 
                                                             # (tests/python/test_generated_docs)
 
 --study also copies the study's figures that the page shows into docs/figures/. The modal
-block is computed here (hypoid.modes, no FMU); every other number comes from the data file.
+block is computed here (hypoid.study.modes, no FMU); every other number comes from the data file.
 """
 
 import argparse
@@ -25,8 +25,9 @@ import sys
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from hypoid import findings as fd  # noqa: E402
-from hypoid import docblocks, modes, report  # noqa: E402
+from hypoid.study import findings as fd  # noqa: E402
+from hypoid.records import docblocks  # noqa: E402
+from hypoid.study import modes, report
 
 DATA = ROOT / "docs" / "paper-findings.json"
 PAGE = ROOT / "docs" / "paper-findings.md"
@@ -160,7 +161,7 @@ def whatif_block(d):
 
 
 def modal_block(d):
-    """hypoid.modes at gear set 1's k_m0 and R_p0 as the study ran them, for Table 3 and the
+    """hypoid.study.modes at gear set 1's k_m0 and R_p0 as the study ran them, for Table 3 and the
     geometric pinion inertia, with the dampers the FMU chose for each (the study's rows)."""
     import pandas as pd
 
@@ -216,13 +217,13 @@ LOADED_CONTINUATION = (f"hypoid sweep --out DIR {LOADED_SET} --vary T_s=50,100 "
 
 
 def loaded_modes(stiffness, path=LOADED_FILE):
-    """Gear set 1's mode 2 and 3 speeds with the loaded tooth data at each torque: hypoid.modes
+    """Gear set 1's mode 2 and 3 speeds with the loaded tooth data at each torque: hypoid.study.modes
     at the mesh stiffness and lever arm the FMU linearises about, stiffness {torque: (k_m0,
     R_p0)} (its calculated parameters in the sweep), beside the file's secant k_m and its ripple
     interpolated linearly in the pinion torque between the levels (physics.md §10.8)."""
     import numpy as np
 
-    from hypoid.gearset_file import read_gearset
+    from hypoid.tca.gearset_file import read_gearset
 
     gs = read_gearset(path)
     levels = np.array(gs.torque_levels)
@@ -248,7 +249,7 @@ def record_loaded(sweep):
     dips there and where the teeth separate."""
     import pandas as pd
 
-    from hypoid import tables
+    from hypoid.study import tables
 
     pts = tables.prepare(pd.read_csv(sweep / "points.csv"))
     cont = tables.prepare(pd.read_csv(sweep / "continuation.csv")) \

@@ -24,10 +24,11 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from hypoid import docblocks, tca  # noqa: E402
-from hypoid import tca_loaded as tl  # noqa: E402
-from hypoid.gearset_file import write_gearset  # noqa: E402
-from hypoid import tca_surrogate as sur  # noqa: E402
+from hypoid.records import docblocks  # noqa: E402
+from hypoid.tca import gearsets as tca
+from hypoid.tca import loaded as tl  # noqa: E402
+from hypoid.tca.gearset_file import write_gearset  # noqa: E402
+from hypoid.tca import surrogate as sur  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 EFFECT = ROOT / "docs" / "figures" / "km_effect.json"
@@ -98,14 +99,14 @@ def operating_point(gear, n, torque, data):
 def one_series():
     """The start values that select the one-series tooth data of a built-in set (calibrated
     k_m0): `tooth_data = paper` where the FMU has that choice, else its built-in files."""
-    from hypoid import variables
+    from hypoid.fmu import variables
     return {"tooth_data": "paper"} if "tooth_data" in variables.VARIABLES else {}
 
 
 def effect_table(table, fmu):
     """Per set and torque: the k_m_scale of the loaded level and the operating point with the
     one-series data, with that scale, and with the layered file of both flanks and five levels."""
-    from hypoid.instance import Instance
+    from hypoid.fmu.instance import Instance
     gear = Instance(fmu)
     base = one_series()
     rows = []

@@ -33,7 +33,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from hypoid.libcosim import step_ns, why_unavailable as libcosim_available
+from hypoid.cosim.libcosim import step_ns, why_unavailable as libcosim_available
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 GEAR_FMU = ROOT / "build" / "HypoidGearPair.fmu"
@@ -269,11 +269,11 @@ def run_libcosim(scene, h, gear_fmu=GEAR_INTENUM_FMU, vehicle_fmu=VEHICLE_FMU):
 
 
 class _Slave:
-    """One FMU through hypoid.instance.Instance; `fmu` is the raw fmpy slave the master drives
+    """One FMU through hypoid.fmu.instance.Instance; `fmu` is the raw fmpy slave the master drives
     call by call."""
 
     def __init__(self, path, name, workdir):
-        from hypoid.instance import Instance
+        from hypoid.fmu.instance import Instance
         self.inst = Instance(path, name=name)
         self.fmu = self.inst.slave
 
@@ -299,7 +299,7 @@ def comm_times(n, ns, times="fmpy"):
 
 def run_fmpy(scene, h, algorithm="jacobi", gear_fmu=GEAR_FMU, vehicle_fmu=VEHICLE_FMU,
              times="fmpy"):
-    """The scene in a fixed-step master written here with hypoid.instance (fmpy's FMU2Slave).
+    """The scene in a fixed-step master written here with hypoid.fmu.instance (fmpy's FMU2Slave).
 
     jacobi: libcosim's fixed_step_algorithm call for call: start values in the instantiated
       state, fmi2SetupExperiment(start 0, no stop time), initialization mode with as many

@@ -11,7 +11,7 @@ import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2]))
-from hypoid.instance import Instance  # noqa: E402
+from hypoid.fmu.instance import Instance  # noqa: E402
 
 
 def fmpy_outputs(fmu, stop, h, settings):

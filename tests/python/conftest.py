@@ -1,5 +1,5 @@
 """Shared fixtures for the FMU tests: the built FMU, its extracted copy, and a small harness
-on hypoid.instance.Instance that records log messages and drives steps."""
+on hypoid.fmu.instance.Instance that records log messages and drives steps."""
 
 import pathlib
 import shutil
@@ -7,7 +7,7 @@ import shutil
 import pytest
 from fmpy import extract, read_model_description
 
-from hypoid.instance import RAW, Instance
+from hypoid.fmu.instance import RAW, Instance
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 FMU_PATH = ROOT / "build" / "HypoidGearPair.fmu"
@@ -33,7 +33,7 @@ def model_description(fmu_path):
 
 
 class Harness(Instance):
-    """One FMU instance driven step by step (hypoid.instance.Instance); `fmu` is the raw fmpy
+    """One FMU instance driven step by step (hypoid.fmu.instance.Instance); `fmu` is the raw fmpy
     slave, `set` passes values to the FMU unchecked (its own checks are under test) and
     `messages` collects (status, category, text)."""
 

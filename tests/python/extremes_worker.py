@@ -21,7 +21,7 @@ import sys
 import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2]))
-from hypoid.instance import FmuError, Instance  # noqa: E402
+from hypoid.fmu.instance import FmuError, Instance  # noqa: E402
 
 ENERGY = ["E_in", "E_out", "E_friction", "E_damping", "E_excitation", "E_stored"]
 FINAL_REALS = ["w_p", "DTE", "eta", "eta_cycle", "P_loss", "W_t"]

@@ -12,7 +12,7 @@ import pathlib
 import numpy as np
 import pytest
 
-from hypoid.instance import FmuError
+from hypoid.fmu.instance import FmuError
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 FULL, SUMP, TORQUE = 2, 2, 1

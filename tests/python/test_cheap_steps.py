@@ -7,7 +7,7 @@ audit closing and a state round trip bit-identical."""
 import numpy as np
 import pytest
 
-from hypoid.levels import LEVELS
+from hypoid.fmu.levels import LEVELS
 
 AUDIT = ["E_in", "E_out", "E_friction", "E_damping", "E_excitation", "E_stored"]
 REALS = ["w_p", "w_s", "W_t", "P_loss", "eta"] + AUDIT

@@ -1,5 +1,5 @@
 """The command line as a new user meets it (issue 13 items 2, 3, 4 and 9): one parser and one
-error path for every `hypoid` tool (hypoid.cliargs, hypoid.cli), enumeration items by name,
+error path for every `hypoid` tool (hypoid.cli.args, hypoid.cli), enumeration items by name,
 `speed_rpm`, and `hypoid run`'s output folder, plots and half backlash."""
 
 import json
@@ -7,9 +7,11 @@ import math
 
 import pytest
 
-from hypoid import cli, cliargs, regress, scenario
-from hypoid.instance import Instance
-from hypoid.values import TABLE, BadValue
+from hypoid import cli, regress
+from hypoid.cli import args as cliargs
+from hypoid.study import scenario
+from hypoid.fmu.instance import Instance
+from hypoid.fmu.values import TABLE, BadValue
 
 
 def one_line_error(capsys, argv, *words):

@@ -22,7 +22,7 @@ from fmpy.fmi2 import FMU2Slave
 from fmpy.validation import validate_fmu
 
 from conftest import ROOT
-from hypoid.instance import Instance
+from hypoid.fmu.instance import Instance
 
 sys.path.insert(0, str(ROOT / "tests" / "cosim"))
 import cosim_driver as cd  # noqa: E402

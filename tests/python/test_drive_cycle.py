@@ -10,8 +10,9 @@ import pathlib
 import numpy as np
 import pytest
 
-from hypoid import cli, drivecycle
-from hypoid.instance import TABLE, Instance
+from hypoid import cli
+from hypoid.drivecycle import run as drivecycle
+from hypoid.fmu.instance import TABLE, Instance
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 VEHICLE_FMU = ROOT / "build" / "LongitudinalVehicle.fmu"
@@ -212,7 +213,7 @@ def test_libcosim_and_fmpy_masters_agree_on_the_axle_loss(tmp_path, capsys):
     """The first 30 s of WLTC class 3 (standing, launch, first peak) from a cold start:
     `hypoid drive-cycle --master libcosim` against the same scene in fmpy's master; both are
     Jacobi with the same inputs, so the axle's energy loss, each part and the oil agree."""
-    from hypoid import libcosim
+    from hypoid.cosim import libcosim
 
     why = libcosim.why_unavailable()
     if why:

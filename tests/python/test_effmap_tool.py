@@ -8,8 +8,9 @@ import shutil
 
 import pytest
 
-from hypoid import cli, effmap
-from hypoid.instance import FmuError, Instance
+from hypoid import cli
+from hypoid.maps import effmap
+from hypoid.fmu.instance import FmuError, Instance
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 GRID = ["--speeds-rpm", "1000,3000", "--torques", "50,150", "--temperatures-c", "40,100"]

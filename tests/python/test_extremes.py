@@ -36,7 +36,7 @@ import sys
 
 import pytest
 from case_clock import CaseClock
-from hypoid.levels import LEVELS, SOLVERS
+from hypoid.fmu.levels import LEVELS, SOLVERS
 
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parents[1]

@@ -9,9 +9,9 @@ import pathlib
 
 import numpy as np
 import pytest
-from hypoid.effmap import builtin_gear_set
-from hypoid.gearset_file import read_gearset
-from hypoid.instance import simulate
+from hypoid.maps.effmap import builtin_gear_set
+from hypoid.tca.gearset_file import read_gearset
+from hypoid.fmu.instance import simulate
 
 MESH = {"mean": 1, "varying": 2, "rigid": 3}
 FRICTION = {"none": 1, "coulomb": 2, "ehl_isothermal": 3, "ehl_thermal": 4}

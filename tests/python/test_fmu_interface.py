@@ -9,7 +9,7 @@ from fmpy import simulate_fmu
 from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import fmi2Error
 
-from hypoid.instance import FmuError
+from hypoid.fmu.instance import FmuError
 
 OUT = ["DTE", "W_t", "w_p", "w_g", "P_loss", "eta", "E_in", "E_stored", "pair[1].W"]
 

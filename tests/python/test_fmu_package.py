@@ -97,15 +97,15 @@ def test_readme_level_table_is_current(tmp_path):
 
 
 def test_python_variable_table_is_current():
-    """hypoid/variables.py is generated from variables.toml like the README table."""
+    """hypoid/fmu/variables.py is generated from variables.toml like the README table."""
     subprocess.run(["python3", str(ROOT / "modelDescription" / "generate.py"), "--python",
-                    str(ROOT / "hypoid" / "variables.py"), "--check"], check=True)
+                    str(ROOT / "hypoid" / "fmu" / "variables.py"), "--check"], check=True)
 
 
 def test_python_variable_table_matches_the_model_description(model_description):
-    """Names, value references, causalities, units and enumeration codes of hypoid.variables
+    """Names, value references, causalities, units and enumeration codes of hypoid.fmu.variables
     agree with the built FMU's modelDescription.xml, read by fmpy."""
-    from hypoid.variables import ENUMERATIONS, GUID, VARIABLES
+    from hypoid.fmu.variables import ENUMERATIONS, GUID, VARIABLES
 
     assert model_description.guid == GUID
     assert [v.name for v in model_description.modelVariables] == list(VARIABLES)

@@ -5,10 +5,10 @@ import pathlib
 
 import numpy as np
 import pytest
-from hypoid.effmap import builtin_gear_set
-from hypoid.gearset_file import read_gearset
-from hypoid.instance import simulate
-from hypoid.variables import ENUMERATIONS
+from hypoid.maps.effmap import builtin_gear_set
+from hypoid.tca.gearset_file import read_gearset
+from hypoid.fmu.instance import simulate
+from hypoid.fmu.variables import ENUMERATIONS
 
 PHYSICS_F = {1: (260.8, 433.3, 1722.2)}  # docs/physics.md §8.4, gear set 1, calibrated k_m0
 PAPER_DATA = ENUMERATIONS["tooth_data"]["paper"]  # the one series with the calibrated k_m0

@@ -7,9 +7,9 @@ import pathlib
 
 import numpy as np
 import pytest
-from hypoid.instance import simulate
+from hypoid.fmu.instance import simulate
 
-from hypoid.variables import ENUMERATIONS
+from hypoid.fmu.variables import ENUMERATIONS
 
 PAPER = ENUMERATIONS["friction_preset"]["paper"]
 

@@ -8,9 +8,9 @@ import pathlib
 import numpy as np
 import pytest
 
-from hypoid import tca
-from hypoid.gearset_file import GearsetFileError, read_gearset, write_gearset
-from hypoid.instance import FmuError, Instance
+from hypoid.tca import gearsets as tca
+from hypoid.tca.gearset_file import GearsetFileError, read_gearset, write_gearset
+from hypoid.fmu.instance import FmuError, Instance
 
 LEVELS = (25.0, 400.0)
 AUDIT = ("E_in", "E_out", "E_friction", "E_damping", "E_excitation", "E_stored")
@@ -198,8 +198,8 @@ def test_shipped_loaded_files_hold_the_loaded_tca_of_today(n):
     not the whole file),
     the contact point's velocity of both flanks from the surrogate's kinematics (§10.4), and the
     header names the command that writes it."""
-    from hypoid import tca_loaded as tl
-    from hypoid import tca_surrogate as sur
+    from hypoid.tca import loaded as tl
+    from hypoid.tca import surrogate as sur
     path = SHIPPED / f"gearset{n}.txt"
     g = read_gearset(path)
     assert g.torque_levels == tl.TORQUES and g.flanks == tl.FLANKS
@@ -273,8 +273,9 @@ def test_the_built_in_maps_refuse_the_other_tooth_data(fmu_path):
     """The built-in efficiency maps are made with the default tooth data: the map level with the
     other one is refused, naming the tooth data it runs and the file the map was made for; the
     drive cycle then picks the fast level, and hypoid effmap hashes the file the FMU reads."""
-    from hypoid import drivecycle, effmap
-    from hypoid.values import TABLE
+    from hypoid.drivecycle import run as drivecycle
+    from hypoid.maps import effmap
+    from hypoid.fmu.values import TABLE
     other = "paper" if TABLE.start("tooth_data") == "loaded" else "loaded"
     gear = Instance(fmu_path)
     try:

@@ -56,7 +56,7 @@ def test_physics_km_effect_table_is_the_recorded_run(tmp_path):
 
 
 def test_loaded_modal_speeds_are_the_fmus():
-    """The page's claim for the loaded tooth data: hypoid.modes at the drive flank's k_m(T),
+    """The page's claim for the loaded tooth data: hypoid.study.modes at the drive flank's k_m(T),
     R_p(T) interpolated between the file's levels gives the mode-3 speed the FMU itself computed
     in the recorded sweep (its calculated n(f_3)), to the rpm."""
     rec = json.loads((ROOT / "docs" / "paper-findings.json").read_text())["loaded"]

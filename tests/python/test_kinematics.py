@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 from fmpy import simulate_fmu
 
-from hypoid import tca
-from hypoid.gearset_file import Gearset, GearsetFileError, Series, read_gearset, write_gearset
-from hypoid.variables import ENUMERATIONS
+from hypoid.tca import gearsets as tca
+from hypoid.tca.gearset_file import Gearset, GearsetFileError, Series, read_gearset, write_gearset
+from hypoid.fmu.variables import ENUMERATIONS
 
 UP, UG, VC = (0.012, 0.020), (0.009, 0.027), (0.004, 0.012)  # m/(rad/s): material, contact point
 MU = 0.05
@@ -213,8 +213,8 @@ def test_the_surrogate_contact_travels_from_heel_to_toe_over_the_flank(n, flank)
     its velocity in space, built in 3-D from the frame of the developed pitch plane, changes its
     cone distance at exactly dy/dφ_p = −TRAVEL b_2 N_p/(2π ε_TCA) (so v_c, R_p and the path
     agree)."""
-    from hypoid import tca_loaded as tl
-    from hypoid import tca_surrogate as sur
+    from hypoid.tca import loaded as tl
+    from hypoid.tca import surrogate as sur
     gs = tl.flank_set(sur.TABLE_1[n], flank)
     bl = gs.blank
     xi = np.linspace(0.0, 1.0, 11)
@@ -255,7 +255,7 @@ def test_the_pinion_rolls_across_the_line_of_contact_at_the_helical_speed(monkey
     whatever the travel along the face (which runs along the line). The surrogate of 9ba6806
     (travel lengthwise, no profile component) rolled at about half of it with no travel."""
     from functools import cached_property
-    from hypoid import tca_surrogate as sur
+    from hypoid.tca import surrogate as sur
 
     class HelicalLine(sur.GearSet):
         @cached_property
@@ -289,7 +289,7 @@ def test_surrogate_contact_point_velocity_of_set_1_by_hand():
     ε_TCA 2.524, β_B 14.35°) at 2000 rpm: V_1 = 6.612 m/s, dy/dt = −2.576 m/s (0.5 b_2 = 15 mm
     over 2.524 of 13 teeth), so λ = (−2.576 + 3.032)/0.7241 = 0.630 m/s along the major axis,
     nothing across it (docs/physics.md §10.4)."""
-    from hypoid import tca_surrogate as sur
+    from hypoid.tca import surrogate as sur
     w = 2000 * math.pi / 30
     b, a, bB = math.radians(46.0), math.radians(16.67), math.radians(14.35)
     dy = -0.5 * 0.030 * 13 * w / (2 * math.pi * 2.524)

@@ -1,4 +1,4 @@
-"""The axle's loss map (hypoid.lossmap) and its section in the study's report: the parts add up
+"""The axle's loss map (hypoid.maps.lossmap) and its section in the study's report: the parts add up
 to P_axle (the ledger's identity P_axle = P_loss + P_churn + P_bearings + P_seals) in the FMU's
 numbers and in the numbers the report prints, and eta_axle = 1 - P_axle / P_in_axle."""
 
@@ -7,7 +7,9 @@ import re
 import numpy as np
 import pytest
 
-from hypoid import lossmap, parallel, report
+from hypoid.maps import lossmap
+from hypoid.fmu import parallel
+from hypoid.study import report
 
 
 @pytest.fixture(scope="module")

@@ -5,9 +5,9 @@ energy audit."""
 
 import numpy as np
 import pytest
-from hypoid.instance import simulate
+from hypoid.fmu.instance import simulate
 
-from hypoid.variables import ENUMERATIONS
+from hypoid.fmu.variables import ENUMERATIONS
 
 ENERGY = ["E_in", "E_out", "E_friction", "E_damping", "E_excitation", "E_stored"]
 PAIRS = [f"pair[{k}].{q}" for k in (1, 2, 3) for q in ("W", "mu", "F_v", "F_b")]

@@ -4,17 +4,17 @@ through the levels' static points. Checked against the loaded contact model itse
 a vibration sees is the contact's tangent dW/dδ (not the secant the files hold), the static
 transmission error is the contact's, and the DTE at and off the mode-3 resonance is that of the
 reference model (tools/mesh_law_reference.py: the 4-DoF model with the contact law W(δ, θ) of
-hypoid.tca_loaded tabulated finely and used at every instant)."""
+hypoid.tca.loaded tabulated finely and used at every instant)."""
 
 import pathlib
 
 import numpy as np
 import pytest
 
-from hypoid import tca
-from hypoid import tca_loaded as tl
-from hypoid import tca_surrogate as sur
-from hypoid.instance import FmuError, Instance, simulate
+from hypoid.tca import gearsets as tca
+from hypoid.tca import loaded as tl
+from hypoid.tca import surrogate as sur
+from hypoid.fmu.instance import FmuError, Instance, simulate
 
 LOADED = pathlib.Path(__file__).parents[2] / "resources" / "gearsets" / "loaded" / "gearset1.txt"
 B = 70e-6  # half backlash [m]

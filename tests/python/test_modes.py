@@ -1,4 +1,4 @@
-"""hypoid.modes (the modal analysis behind docs/paper-findings.md) against the FMU's own modal
+"""hypoid.study.modes (the modal analysis behind docs/paper-findings.md) against the FMU's own modal
 analysis (fmu-src/model/modal.c: f_2..f_4 and the dampers) and against an independent rigid-mesh
 reduction, and the two findings the note rests on."""
 
@@ -7,8 +7,8 @@ import math
 import numpy as np
 import pytest
 
-from hypoid import modes
-from hypoid.variables import ENUMERATIONS
+from hypoid.study import modes
+from hypoid.fmu.variables import ENUMERATIONS
 
 PAPER_DATA = ENUMERATIONS["tooth_data"]["paper"]
 
@@ -64,7 +64,7 @@ def test_table3_mode2_dominates_and_the_geometric_pinion_moves_it_to_2000_rpm():
 
 def _hand_matrices(s):
     """K and M of Eqs. 20-23 linearised (f(x) = x), written out element by element from the
-    equations of motion rather than built from the spring directions as hypoid.modes does."""
+    equations of motion rather than built from the spring directions as hypoid.study.modes does."""
     k1, k2, km, rp, rg = s.k_t1, s.k_t2, s.k_m, s.R_p, s.R_p * s.ratio
     K = np.array([[k1, -k1, 0.0, 0.0],
                   [-k1, k1 + km * rp ** 2, -km * rp * rg, 0.0],
@@ -153,7 +153,7 @@ def _time_domain_gain(s, c, f_hz, cycles=200):
 @pytest.mark.parametrize("I_p, zeta", [(0.014, (0.02, 0.04, 0.03)),
                                        (modes.I_P_GEOMETRY, (0.02, 0.02, 0.03))])
 def test_dte_gain_against_a_time_domain_run(I_p, zeta):
-    """The DTE gain per mode of hypoid.modes against the linear equations integrated in time
+    """The DTE gain per mode of hypoid.study.modes against the linear equations integrated in time
     at the natural frequencies; and the ordering the note rests on (Table 3: mode 2 about 3x
     mode 3; the geometric pinion: mode 3 the stronger)."""
     s = modes.system(I_p=I_p)
@@ -170,7 +170,7 @@ def test_pinion_inertia_from_geometry_by_quadrature():
     I_p = 1e-3 kg m^2 within the order of head + shaft, Table 3's 0.014 far above it."""
     from scipy.integrate import quad
 
-    from hypoid import tca_surrogate as sur
+    from hypoid.tca import surrogate as sur
 
     bl = sur.TABLE_1[1]
     r_o, r_i = bl.R_e1 * math.sin(bl.delta_1), (bl.R_e1 - bl.b_1) * math.sin(bl.delta_1)

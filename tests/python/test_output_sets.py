@@ -9,8 +9,8 @@ that built a table: tests/c/test_model.c, test_output_sets.)"""
 import numpy as np
 import pytest
 
-from hypoid.levels import LEVELS
-from hypoid.variables import VARIABLES
+from hypoid.fmu.levels import LEVELS
+from hypoid.fmu.variables import VARIABLES
 
 REALS = [n for n, v in VARIABLES.items() if v.causality == "output" and v.type == "Real"]
 INTS = [n for n, v in VARIABLES.items() if v.causality == "output" and v.type != "Real"]

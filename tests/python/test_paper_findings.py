@@ -1,5 +1,5 @@
 """The paper's findings (Paouris et al. 2016, §3) checked on the FMU with a reduced grid, using
-the same measures as the study report (hypoid.findings). Where the surrogate tooth contact data
+the same measures as the study report (hypoid.study.findings). Where the surrogate tooth contact data
 cannot reproduce a finding at the paper's speed, the test is a strict xfail that documents it
 (docs/paper-findings.md): it turns into a failure the day the FMU does reproduce it.
 
@@ -12,8 +12,9 @@ import pathlib
 
 import pytest
 
-from hypoid import findings as fd
-from hypoid import parallel, steady, study, sweep
+from hypoid.study import findings as fd
+from hypoid.fmu import parallel
+from hypoid.study import steady, paper as study, sweep
 
 T_LOW, T_HIGH = (50.0, 100.0), (200.0, 300.0)
 LUB_SPEEDS = [1000, 2000, 3500, 5000]

@@ -7,7 +7,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from hypoid import findings, plots, report, results
+from hypoid.study import findings, plots, report, results
 
 TRACED = {"gear_set": 1, "lubricant": 1, "lubricant_file": "", "T_s": 100.0, "status": "ok",
           "speed_rpm": 1200.0, "eta_rms": 0.98765, "DTE_pp_um": 40.0,

@@ -1,4 +1,4 @@
-"""The study machinery (hypoid.steady, .continuation, .sweep, .parallel, .results): instance
+"""The study machinery (hypoid.study.steady, .continuation, .sweep, .parallel, .results): instance
 reuse through fmi2Reset, steady-state detection, window sampling, resume after an interruption,
 the dask path, error rows, and the swapped-alpha* lubricant file."""
 
@@ -11,8 +11,11 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from hypoid import cliargs, continuation, lubricant, parallel, results, steady, study, sweep
-from hypoid.instance import FmuError, Instance, normalize
+from hypoid.cli import args as cliargs
+from hypoid.study import continuation, results, steady, paper as study, sweep
+from hypoid import lubricant
+from hypoid.fmu import parallel
+from hypoid.fmu.instance import FmuError, Instance, normalize
 
 QUICK = steady.Settings(window_cycles=10, min_settle_cycles=10, max_settle_time=0.05)
 OUTS = ("eta_rms", "eta_mean", "DTE_pp_um", "DTE_min_um", "W_t_mean_N", "mu_mean", "h_c_mean_um")

@@ -1,4 +1,4 @@
-"""Tests of the loaded tooth contact analysis (hypoid/tca_loaded.py, docs/physics.md §10.8)
+"""Tests of the loaded tooth contact analysis (hypoid/tca/loaded.py, docs/physics.md §10.8)
 against hand calculations: closed-form beams, a single pair's compliance summed from its parts by
 quadrature, equal pairs sharing a load, linear springs with a gap, the contact ratio's growth
 with load and ISO 6336-1's single-pair stiffness."""
@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from hypoid import tca_loaded as tl
-from hypoid import tca_surrogate as sur
+from hypoid.tca import loaded as tl
+from hypoid.tca import surrogate as sur
 
 SETS = (1, 2, 3)
 

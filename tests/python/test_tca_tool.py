@@ -12,9 +12,9 @@ import re
 import numpy as np
 import pytest
 
-from hypoid import tca, tca_fit
-from hypoid import tca_surrogate as sur
-from hypoid.gearset_file import (CONTACT_SERIES, MESH_SERIES, PAIR_SERIES, GearsetFileError,
+from hypoid.tca import gearsets as tca, fit as tca_fit
+from hypoid.tca import surrogate as sur
+from hypoid.tca.gearset_file import (CONTACT_SERIES, MESH_SERIES, PAIR_SERIES, GearsetFileError,
                                  read_gearset)
 
 HERE = os.path.dirname(__file__)

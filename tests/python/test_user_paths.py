@@ -13,8 +13,9 @@ import pytest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 
-from hypoid import paths, scenario  # noqa: E402
-from hypoid.instance import normalize  # noqa: E402
+from hypoid import paths  # noqa: E402
+from hypoid.study import scenario
+from hypoid.fmu.instance import normalize  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 OIL = ROOT / "resources" / "lubricants" / "OS265963.txt"

@@ -9,8 +9,8 @@ import pathlib
 import numpy as np
 import pytest
 
-from hypoid.instance import FmuError
-from hypoid.variables import ENUMERATIONS
+from hypoid.fmu.instance import FmuError
+from hypoid.fmu.variables import ENUMERATIONS
 
 RPM = math.pi / 30
 B = 70e-6  # the default half backlash [m]
@@ -109,7 +109,7 @@ def test_elastic_deflection_of_the_simpler_meshes(harness, mesh_model, check):
 
 def test_hypoid_run_shows_the_warnings(tmp_path, fmu_path, capsys):
     """`hypoid run` passes the FMU's set-up warnings on to the user and into summary.json."""
-    from hypoid import scenario
+    from hypoid.study import scenario
 
     argv = ["--fmu", str(fmu_path), "--out", str(tmp_path), "--stop-time", "0.005",
             "--set", "w_set=1500", "w_p0=150"]

@@ -1,0 +1,1 @@
+"""Co-simulation masters: the libcosim driver (`libcosim`)."""

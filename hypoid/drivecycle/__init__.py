@@ -1,0 +1,1 @@
+"""The axle in a car over a speed cycle (`hypoid drive-cycle`)."""

@@ -1,0 +1,1 @@
+"""Generated records: blocks of the documentation written from recorded data (`docblocks`)."""
