@@ -29,7 +29,7 @@ def usage():
 
 def expected_errors():
     """The exceptions that are the user's or the FMU's, printed as one line."""
-    from hypoid.cli.args import UsageError
+    from hypoid.errors import UsageError
     from hypoid.fmu.instance import FmuError
     from hypoid.fmu.values import BadValue
 

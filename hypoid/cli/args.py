@@ -9,6 +9,7 @@ import pathlib
 
 import numpy as np
 
+from hypoid.errors import UsageError  # noqa: F401 (the tools' cliargs.UsageError)
 from hypoid.paths import user_path
 from hypoid.fmu.values import TABLE, BadValue
 
@@ -19,10 +20,6 @@ SET_HELP = ("start values by name, e.g. T_s=200 gear_set=2 friction_model=ehl_is
             "lists every name, its unit and the enumeration items")
 VARY_HELP = ("values of one variable: start:stop:step (inclusive) or v1,v2,...; repeat for a "
              "product grid, e.g. --vary speed_rpm=1000:5000:250 --vary T_s=50,100")
-
-
-class UsageError(Exception):
-    """A mistake on the command line; the message is one line saying what is allowed."""
 
 
 class Parser(argparse.ArgumentParser):

@@ -7,7 +7,7 @@ docs/integration.md."""
 
 import pathlib
 
-from hypoid.cli.args import UsageError
+from hypoid.errors import UsageError
 
 
 def why_unavailable():

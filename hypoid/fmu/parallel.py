@@ -34,6 +34,11 @@ class FmuRef:
         self.sha = hashlib.sha256(self.data).hexdigest()
 
 
+class PointTimeout(RuntimeError):
+    """A task used more CPU time than it may (hypoid.study.steady.Settings.max_cpu for a point);
+    it comes back as {'status': 'timeout', ...}."""
+
+
 # ---------------------------------------------------------------------------- worker side
 def instance_for(sha, data):
     """This process's (and thread's) FMU instance, created on first use."""
@@ -68,7 +73,6 @@ def _close_all():
 def guarded(sha, data, fn, *args):
     """Runs fn(instance, *args); failures come back as {'status': 'error', ...}."""
     from hypoid.fmu.instance import FmuError
-    from hypoid.study.steady import PointTimeout
 
     t0 = time.process_time()
     try:

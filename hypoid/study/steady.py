@@ -9,8 +9,9 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from hypoid.study import metrics
 from hypoid.fmu.instance import RPM, SPEED_KEY
+from hypoid.fmu.parallel import PointTimeout
+from hypoid.study import metrics
 
 
 @dataclass(frozen=True)
@@ -29,10 +30,6 @@ class Settings:
 
     def as_dict(self):
         return asdict(self)
-
-
-class PointTimeout(RuntimeError):
-    """A point used more CPU time than Settings.max_cpu."""
 
 
 class Sampler:
