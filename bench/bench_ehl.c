@@ -11,6 +11,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "io/constants.h"
 #include "tribo/ehl.h"
 
 #define N_STATES 3000 /* per batch: 1000 steps x 3 pairs */

@@ -4,7 +4,7 @@
 
 #include <math.h>
 
-#define HG_PI 3.14159265358979323846
+#include "io/constants.h"
 
 hg_mesh_force hg_mesh_force_components(const hg_member_geom *m, double F_t, double s, int driving)
 {

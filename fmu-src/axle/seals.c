@@ -1,7 +1,7 @@
 /* Lip-seal friction (seals.h for the source). */
 #include "axle/seals.h"
 
-#define HG_PI 3.14159265358979323846
+#include "io/constants.h"
 
 double hg_seal_torque(double d_sh)
 {

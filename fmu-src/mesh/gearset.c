@@ -6,9 +6,9 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "io/constants.h"
 #include "io/datafile.h"
 
-#define TWO_PI 6.283185307179586
 #define LS_CONTACT_FLOOR 1e-3 /* load shares below this count as out of contact (docs/physics.md §10.7) */
 #define CHECK_POINTS 720      /* samples over three mesh cycles for the sanity checks */
 
@@ -144,7 +144,7 @@ static int check_block(const char *path, const char *where, const hg_flank_serie
 {
     int j, k;
     for (j = 0; j < CHECK_POINTS; j++) {
-        double theta = 3.0 * TWO_PI * j / CHECK_POINTS, raw_sum = 0.0;
+        double theta = 3.0 * HG_TWO_PI * j / CHECK_POINTS, raw_sum = 0.0;
         hg_harmonics h;
         hg_harmonics_eval(theta, HG_MAX_HARMONICS, &h);
         if (check_positive(path, where, "k_m", hg_series_value(&b->y[HG_S_K_M], &h), theta, err,
@@ -154,7 +154,7 @@ static int check_block(const char *path, const char *where, const hg_flank_serie
             return -1;
         for (k = 0; k < HG_MAX_PAIRS; k++) {
             double ls;
-            hg_harmonics_eval((theta + TWO_PI * k) / 3.0, HG_MAX_HARMONICS, &h);
+            hg_harmonics_eval((theta + HG_TWO_PI * k) / 3.0, HG_MAX_HARMONICS, &h);
             ls = hg_series_value(&b->y[HG_S_LS], &h);
             raw_sum += ls;
             if (ls - LS_CONTACT_FLOOR > 0.0 &&
@@ -182,7 +182,7 @@ static int check_deflections(const char *path, const hg_gearset *g, int fl, char
 {
     int j, lv;
     for (j = 0; j < CHECK_POINTS / 3; j++) {
-        double theta = TWO_PI * 3 * j / CHECK_POINTS, W_lo = 0.0, a_lo = 0.0;
+        double theta = HG_TWO_PI * 3 * j / CHECK_POINTS, W_lo = 0.0, a_lo = 0.0;
         hg_harmonics h;
         hg_harmonics_eval(theta, HG_MAX_HARMONICS, &h);
         for (lv = 0; lv < g->n_levels; lv++) {
@@ -341,7 +341,7 @@ void hg_gearset_normalise_shares(double ls[HG_MAX_PAIRS])
     for (k = 0; k < HG_MAX_PAIRS; k++) ls[k] = sum > 0.0 ? ls[k] / sum : 1.0 / 3.0;
 }
 
-double hg_gearset_pair_phase(double theta, int k) { return (theta + TWO_PI * k) / 3.0; }
+double hg_gearset_pair_phase(double theta, int k) { return (theta + HG_TWO_PI * k) / 3.0; }
 
 void hg_gearset_entrainment(const double up[2], const double ug[2], const double vc[2],
                             double w_p, double w_g, double u_p[2], double u_g[2])

@@ -4,6 +4,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "io/constants.h"
+
 void hg_mesh_law_levels(int n, const double W[], hg_law_levels *lv)
 {
     int l;
@@ -187,7 +189,7 @@ double hg_mesh_law_tangent_mean(const hg_gearset *g, int flank, double T)
         hg_mesh_law law;
         hg_law_force f;
         int side;
-        hg_mesh_law_of_series(g, flank, 6.283185307179586 * j / TANGENT_ANGLES, &lv, &law);
+        hg_mesh_law_of_series(g, flank, HG_TWO_PI * j / TANGENT_ANGLES, &lv, &law);
         for (side = -1; side <= 1; side += 2) { /* both slopes at a level's own load */
             hg_mesh_law_force(&law, hg_mesh_law_approach(&law, W * (1.0 + side * NODE_SIDE)), &f);
             sum += 0.5 * f.k;

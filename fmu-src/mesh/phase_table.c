@@ -5,12 +5,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define TWO_PI 6.283185307179586
+#include "io/constants.h"
 
-#define W_MESH (TWO_PI / HG_PT_N_MESH) /* node spacing in theta */
-#define W_PAIR (TWO_PI / HG_PT_N_PAIR) /* node spacing in psi */
+#define W_MESH (HG_TWO_PI / HG_PT_N_MESH) /* node spacing in theta */
+#define W_PAIR (HG_TWO_PI / HG_PT_N_PAIR) /* node spacing in psi */
 /* Their reciprocals: the right-hand side multiplies (a division costs it several multiplies) */
-#define PER_W_MESH (HG_PT_N_MESH / TWO_PI)
+#define PER_W_MESH (HG_PT_N_MESH / HG_TWO_PI)
 #define PER_PERIOD (1.0 / HG_PT_N_PAIR)
 
 /* Value and slope times the node spacing w. */

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "hg_vars.h"
+#include "io/constants.h"
 
 #define SLIDE_EPS 1e-4 /* regularisation of the sliding direction [m/s] (docs/physics.md §8.8) */
 #define SPIN_EPS 1e-3  /* regularisation of the rotation direction of the map losses [rad/s] */
@@ -299,7 +300,7 @@ static void efficiency(const hg_inputs *u, const double *y, hg_dyn_eval *ev)
 static double torque_filter_rate(const hg_dyn_params *p, const double *y, const hg_dyn_eval *ev)
 {
     double w = fabs(y[HG_Y_W_P]) > KM_FILTER_W_MIN ? fabs(y[HG_Y_W_P]) : KM_FILTER_W_MIN;
-    double tau = KM_FILTER_CYCLES * 6.283185307179586 / (p->gear->N_p * w);
+    double tau = KM_FILTER_CYCLES * HG_TWO_PI / (p->gear->N_p * w);
     if (p->gear->n_levels < 2) return 0.0;
     return (fabs(ev->W_t) * ev->mesh.R_p - y[HG_Y_T_KM]) / tau;
 }

@@ -5,7 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define TWO_PI 6.283185307179586
+#include "io/constants.h"
+
 #define W_FLOOR 1000.0   /* smallest W_max [N] */
 #define LOAD_LOW 0.0625  /* rebuild when W_t falls below this fraction of W_max */
 #define FD_SPEED 5e-4    /* relative step of the speed derivatives (forward) */
@@ -145,7 +146,7 @@ void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg
         for (i = 0; i < HG_FT_N_PSI; i++) { /* along the path: each solve warm-starts the next */
             hg_pair_point pt;
             double w0, *e = t->c[i + 1][j + 1];
-            hg_gearset_pair_point(g, flank, level, TWO_PI * i / HG_FT_N_PSI, &pt);
+            hg_gearset_pair_point(g, flank, level, HG_TWO_PI * i / HG_FT_N_PSI, &pt);
             e[HG_FT_CH_L] = ln_mu(cfg, &pt, W, key->w_p, key->w_g, key->T_bath, &warm);
             w0 = warm;
             drift_slopes(e, key, cfg, &pt, W, gear_follows, &warm);
@@ -231,7 +232,7 @@ double hg_friction_table_F(const hg_friction_table *t, double psi, double W, dou
     double d[HG_FT_N_CH];
     if (W < HG_EHL_LOAD_MIN) return 0.0;
     drifts(&t->key, w_p, w_g, T_bath, d);
-    phase_stencil_at(psi * (HG_FT_N_PSI / TWO_PI), &ps);
+    phase_stencil_at(psi * (HG_FT_N_PSI / HG_TWO_PI), &ps);
     return W * exp(ln_mu_at(t, &ps, 0, W, d));
 }
 
@@ -243,7 +244,7 @@ void hg_friction_table_pairs(const hg_friction_table *t, double theta,
     double d[HG_FT_N_CH];
     int k;
     drifts(&t->key, w_p, w_g, T_bath, d);
-    phase_stencil_at(theta * (HG_FT_N_PSI / (3.0 * TWO_PI)), &ps);
+    phase_stencil_at(theta * (HG_FT_N_PSI / (3.0 * HG_TWO_PI)), &ps);
     for (k = 0; k < HG_MAX_PAIRS; k++)
         F[k] = W[k] < HG_EHL_LOAD_MIN
                    ? 0.0

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "io/constants.h"
 #include "model/outputs.h"
 #include "model/setup.h"
 #include "model/stepping.h"
@@ -157,7 +158,7 @@ static void build_table(hg_model *m)
     hg_ft_set_table(m->tables, &m->s.p.friction, &m->s.gear, b.flank, b.lo);
     if (b.hi != b.lo) hg_ft_set_table(m->tables, &m->s.p.friction, &m->s.gear, b.flank, b.hi);
     hg_logf(&m->log, "logEvents", "t = %.6f s: friction table built for %.1f rpm, T_oil = "
-            "%.2f degC, pair loads up to %.0f N", rt->t, rt->ft_key.w_p * 9.549296585513721,
+            "%.2f degC, pair loads up to %.0f N", rt->t, rt->ft_key.w_p * HG_RPM_PER_RAD_S,
             rt->ft_key.T_bath - 273.15, rt->ft_key.W_max);
 }
 

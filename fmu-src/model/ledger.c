@@ -4,10 +4,11 @@
 #include <math.h>
 
 #include "axle/seals.h"
+#include "io/constants.h"
 #include "io/errmsg.h"
 #include "tribo/rheology.h"
 
-#define DEG (3.14159265358979323846 / 180.0)
+#define DEG (HG_PI / 180.0)
 #define SPIN_EPS 1e-2   /* regularisation of the rotation direction of the loss torques [rad/s] */
 #define RHO_EXPANSION 7e-4 /* volumetric expansion of gear oils [1/K] (assumed, docs/axle.md) */
 #define T_15C 288.15

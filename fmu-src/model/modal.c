@@ -4,12 +4,11 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "io/constants.h"
 #include "io/errmsg.h"
 
 #define N HG_MODAL_NDOF
 #define NC 3 /* number of dampers / elastic modes */
-
-static const double TWO_PI = 6.283185307179586476925286766559;
 
 
 /* ---------------------------------------------------------------------------------------------
@@ -173,7 +172,7 @@ int hg_modal_analysis(const hg_modal_input *in, hg_modes *out, char *err, size_t
             return HG_MODAL_ENUM;
         }
         out->omega[i] = sqrt(w2);
-        out->f_hz[i] = out->omega[i] / TWO_PI;
+        out->f_hz[i] = out->omega[i] / HG_TWO_PI;
         store_mode(V, order[i], sqrt_m, out->phi[i]);
     }
     return HG_MODAL_OK;

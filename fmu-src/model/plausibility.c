@@ -3,16 +3,14 @@
 
 #include <math.h>
 
-#define RPM_PER_RAD_S 9.549296585513721 /* 30 / pi */
-
 static void warn_speed(const hg_logger *lg, const char *name, double w)
 {
     if (fabs(w) <= HG_PLAUSIBLE_PINION_SPEED) return;
     hg_logf(lg, "logStatusWarning",
             "%s = %g rad/s (%.0f rpm) is faster than road-vehicle axle pinions turn (above "
             "%.0f rad/s = %.0f rpm); %s is in rad/s: if %g was meant in rpm, set %.4g rad/s",
-            name, w, w * RPM_PER_RAD_S, HG_PLAUSIBLE_PINION_SPEED,
-            HG_PLAUSIBLE_PINION_SPEED * RPM_PER_RAD_S, name, w, w / RPM_PER_RAD_S);
+            name, w, w * HG_RPM_PER_RAD_S, HG_PLAUSIBLE_PINION_SPEED,
+            HG_PLAUSIBLE_PINION_SPEED * HG_RPM_PER_RAD_S, name, w, w / HG_RPM_PER_RAD_S);
 }
 
 void hg_plausibility_warn(const hg_vars *v, const hg_logger *lg)

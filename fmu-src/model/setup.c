@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "io/constants.h"
 #include "io/datafile.h"
 #include "io/errmsg.h"
 #include "model/modal.h"

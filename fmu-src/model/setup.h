@@ -10,8 +10,6 @@
 #include "io/log.h"
 #include "model/dynamics.h"
 
-#define HG_TWO_PI 6.283185307179586
-
 typedef struct {
     hg_gearset gear;
     hg_phase_tables phase; /* gear's series tabulated, per flank and torque level */

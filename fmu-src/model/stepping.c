@@ -4,6 +4,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "io/constants.h"
+
 #define WRAP_PERIODS 1024     /* wrap the pinion angle after this many load-share periods */
 #define MAX_AUTO_STEP 1e-3    /* [s] */
 #define STEPS_PER_MODE 8      /* fixed steps per period of the highest natural mode, at least */
@@ -232,7 +234,7 @@ void hg_stepping_window_event(hg_runtime *rt, const hg_logger *lg)
     rt->win_eta_axle2_0 = rt->y[HG_Y_ETA_AXLE2];
 }
 
-static double rpm(double w) { return w * 30.0 / 3.141592653589793; }
+static double rpm(double w) { return w * 30.0 / HG_PI; }
 
 /* The map holds its edge values beyond its grid: say so once per run. */
 static void check_map_range(hg_runtime *rt, const hg_effmap *map, int s_sump,

@@ -3,6 +3,7 @@
 
 #include <math.h>
 
+#include "io/constants.h"
 #include "tribo/contact.h"
 #include "tribo/f52_table.h"
 

@@ -3,6 +3,8 @@
 
 #include <math.h>
 
+#include "io/constants.h"
+
 void hg_kinematics_eval(const double u_p[2], const double u_g[2], hg_kinematics *kin)
 {
     double ux = 0.5 * (u_p[0] + u_g[0]), uy = 0.5 * (u_p[1] + u_g[1]);

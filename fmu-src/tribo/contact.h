@@ -4,8 +4,6 @@
 #ifndef HG_TRIBO_CONTACT_H
 #define HG_TRIBO_CONTACT_H
 
-#define HG_PI 3.14159265358979323846
-
 /* Ratios R_y/R_x above this are treated as this (line-contact limit, k ~ 2.5e4). */
 #define HG_HERTZ_RATIO_MAX 1e8
 

@@ -1,6 +1,7 @@
 /* Greenwood-Tripp functions F_2 and F_5/2 (docs/physics.md §5.3) against an independent quadrature and the
  * reference table; W_asp, A_asp and F_b (paper eqs. 11-13). */
 #include "check.h"
+#include "io/constants.h"
 #include "tribo/asperity.h"
 #include "tribo/contact.h"
 

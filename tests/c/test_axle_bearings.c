@@ -3,8 +3,9 @@
  * adjusted pair, Palmgren's friction moments as in ISO/TR 14179-2) and against statics. */
 #include "check.h"
 #include "axle/bearings.h"
+#include "io/constants.h"
 
-#define DEG (3.14159265358979323846 / 180.0)
+#define DEG (HG_PI / 180.0)
 
 static void check_components(void)
 {

@@ -3,16 +3,15 @@
  * from the printed formulas, not from this code:
  *   ring gear R_p = 82.5 mm, b = 30 mm, h = 25 mm, V_0 = 1.2 L, rho = 870 kg/m^3. */
 #include "check.h"
+#include "io/constants.h"
 #include "axle/churning.h"
-
-#define PI 3.14159265358979323846
 
 int main(void)
 {
     hg_churn_geom g = {0.0825, 0.030, 0.025, 1.2e-3};
     /* geometry: a disc immersed to its axis wets half of both faces and half its rim */
-    CHECK_CLOSE(hg_churn_submerged_area(g.R_p, g.b, g.R_p), PI * g.R_p * g.R_p + PI * g.R_p * g.b,
-                1e-12, 0);
+    CHECK_CLOSE(hg_churn_submerged_area(g.R_p, g.b, g.R_p),
+                HG_PI * g.R_p * g.R_p + HG_PI * g.R_p * g.b, 1e-12, 0);
     /* theta = acos(1 - 25/82.5) = 0.79973 rad: S_m = 8.0397e-3 m^2 */
     CHECK_CLOSE(hg_churn_submerged_area(g.R_p, g.b, g.h), 8.039702e-3, 1e-6, 0);
     /* laminar regime (Re_c = 1559, 2007 formula): nu = 1e-4 m^2/s, omega = 75.6 rad/s

@@ -3,6 +3,7 @@
  * natural convection in air, Incropera's flat-plate forced convection, Churchill's n = 3
  * combination, grey-body radiation). */
 #include "check.h"
+#include "io/constants.h"
 #include "axle/seals.h"
 #include "axle/sump.h"
 
@@ -12,12 +13,10 @@ static double heat(const hg_housing *h, double T_oil, double T_amb, double v_air
     return hg_housing_heat_h(h, hg_housing_h_conv(h, T_oil - T_amb, v_air), T_oil, T_amb);
 }
 
-#define PI 3.14159265358979323846
-
 int main(void)
 {
     /* ISO/TR 14179-2: d = 40 mm, n = 3000 r/min -> P = 7.69e-6 * 1600 * 3000 = 36.912 W */
-    double w = 3000.0 * PI / 30.0;
+    double w = 3000.0 * HG_PI / 30.0;
     CHECK_CLOSE(hg_seal_torque(0.040) * w, 36.912, 1e-12, 0);
     /* natural convection, dT 50 K on L = 0.25 m: 1.42 (200)^(1/4) = 5.34006 W/(m^2 K) */
     CHECK_CLOSE(hg_h_natural(50.0, 0.25), 5.340056, 1e-6, 0);

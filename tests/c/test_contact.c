@@ -1,6 +1,7 @@
 /* Contact geometry: elliptic integrals, exact and approximate Hertz (docs/physics.md §2.3, §12),
  * kinematics and R_e, R_s (docs/physics.md §1, §2.2). */
 #include "check.h"
+#include "io/constants.h"
 #include "tribo/contact.h"
 
 int main(void)

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "io/constants.h"
 #include "paper_oils.h"
 #include "tribo/ehl.h"
 

@@ -9,12 +9,12 @@
 #include <stdlib.h>
 
 #include "check.h"
+#include "io/constants.h"
 #include "hg_vars.h"
 #include "io/datafile.h"
 #include "model/friction_table.h"
 #include "paper_oils.h"
 
-#define TWO_PI 6.283185307179586
 #define RPM 0.10471975511965977
 #define N_POINTS 4000
 #define GEAR_SPEED_RIPPLE 0.015 /* the gear speed's excursion from w_p / ratio */
@@ -59,7 +59,7 @@ static double worst_error(const hg_friction_config *cfg, const hg_gearset *g, do
     hg_ft_key_for(w_p, ratio, T_bath, W_t, &key);
     hg_friction_table_build(&t, cfg, g, HG_FLANK_DRIVE, 0, &key, rigid);
     for (n = 0; n < N_POINTS; n++) {
-        double psi = uniform(&seed, 0.0, TWO_PI), d = HG_FT_SPEED_DRIFT;
+        double psi = uniform(&seed, 0.0, HG_TWO_PI), d = HG_FT_SPEED_DRIFT;
         double W_t_now = uniform(&seed, 0.0625, HG_FT_LOAD_FILL) * key.W_max;
         double ls = uniform(&seed, 0.0, 1.0), W = ls * W_t_now;
         double wp = w_p * (1.0 + uniform(&seed, -d, d));
@@ -108,7 +108,7 @@ static double worst_blend_error(const hg_friction_config *cfg, const hg_gearset 
     hg_ft_key_for(w_p, ratio, T_bath, T_mid / R_p0, &set.key);
     set.keyed = 1;
     for (n = 0; n < N_POINTS / 4; n++) {
-        double psi = uniform(&seed, 0.0, TWO_PI), d = HG_FT_SPEED_DRIFT;
+        double psi = uniform(&seed, 0.0, HG_TWO_PI), d = HG_FT_SPEED_DRIFT;
         double T = n % 8 ? uniform(&seed, g->T_level[0], g->T_level[g->n_levels - 1])
                          : g->T_level[n / 8 % g->n_levels];
         double W_t_now = uniform(&seed, 0.0625, HG_FT_LOAD_FILL) * set.key.W_max;
@@ -201,7 +201,7 @@ static void test_pairs_at_once(const hg_friction_config *cfg, const hg_gearset *
     hg_ft_key_for(w, ratio, 313.15, 4760.0, &key);
     hg_friction_table_build(&t, cfg, g, HG_FLANK_DRIVE, 0, &key, 0);
     for (n = 0; n < 600; n++) {
-        double theta = -3.0 * TWO_PI + 6.0 * TWO_PI * (n + 0.41) / 600.0, F[HG_MAX_PAIRS];
+        double theta = -3.0 * HG_TWO_PI + 6.0 * HG_TWO_PI * (n + 0.41) / 600.0, F[HG_MAX_PAIRS];
         double W[HG_MAX_PAIRS] = {3.0 + 15.0 * n, 4760.0 * (n % 7) / 6.0, 9000.0 - 14.0 * n};
         double wp = w * (1.0 + 0.1 * sin(n)), wg = w / ratio * (1.0 + 0.1 * cos(n));
         double T = 313.15 + 3.0 * sin(0.3 * n);

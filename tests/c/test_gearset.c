@@ -4,10 +4,9 @@
 #include <string.h>
 
 #include "check.h"
+#include "io/constants.h"
 #include "io/datafile.h"
 #include "mesh/gearset.h"
-
-#define TWO_PI 6.283185307179586
 
 static void builtin_set1(void)
 {
@@ -24,12 +23,12 @@ static void builtin_set1(void)
     CHECK_CLOSE(g.e_0.s[0], 1.5e-6, 1e-9, 0.0);
     /* the contact point moves along the line of contact at 0.630 m/s at 2000 rpm, nothing across
      * it (docs/physics.md §10.4) */
-    CHECK_CLOSE(hypot(g.s[0][0].y[HG_S_VC_X].mean, g.s[0][0].y[HG_S_VC_Y].mean) * 2000.0 * TWO_PI /
-                    60.0,
+    CHECK_CLOSE(hypot(g.s[0][0].y[HG_S_VC_X].mean, g.s[0][0].y[HG_S_VC_Y].mean) * 2000.0 *
+                    HG_TWO_PI / 60.0,
                 0.630, 0.0, 0.002);
     CHECK(fabs(g.s[0][0].y[HG_S_VC_X].mean) < 1e-15);
     for (j = 0; j < 997; j++) { /* off any fitting grid */
-        double theta = 3.0 * TWO_PI * j / 997.0, sum = 0.0, in_contact = 0;
+        double theta = 3.0 * HG_TWO_PI * j / 997.0, sum = 0.0, in_contact = 0;
         hg_pair_geometry p;
         hg_mesh_point m;
         hg_mesh_point c;

@@ -11,8 +11,7 @@
 #include <string.h>
 
 #include "check.h"
-
-static const double PI = 3.14159265358979323846264338327950288;
+#include "io/constants.h"
 
 #define NS 8 /* state dimension */
 
@@ -238,7 +237,7 @@ static void test_set1_frequencies(void)
     CHECK_CLOSE(m.f_hz[1], 260.8, 0.0, 0.05);  /* Hz, §8.4 */
     CHECK_CLOSE(m.f_hz[2], 433.3, 0.0, 0.05);  /* Hz */
     CHECK_CLOSE(m.f_hz[3], 1722.2, 0.0, 0.05); /* Hz */
-    CHECK_CLOSE(m.omega[2], 2.0 * PI * m.f_hz[2], 1e-14, 0.0);
+    CHECK_CLOSE(m.omega[2], 2.0 * HG_PI * m.f_hz[2], 1e-14, 0.0);
     CHECK_CLOSE(60.0 * m.f_hz[2] / 13.0, 2000.0, 0.0, 0.5); /* rpm: mode 3 at 2000 rpm */
 }
 
@@ -496,7 +495,7 @@ static void test_damped_eigenvalues(void)
     CHECK(hg_modal_dampers(&s1, ZETA, &d, NULL, 0) == HG_MODAL_OK);
     CHECK(damped_modes(&s1, &d, m.omega[3], wn, z) == 0);
     printf("set 1 damped eigenvalues: zeta = %.5f %.5f %.5f, f_n = %.2f %.2f %.2f Hz\n", z[0], z[1],
-           z[2], wn[0] / (2 * PI), wn[1] / (2 * PI), wn[2] / (2 * PI));
+           z[2], wn[0] / (2 * HG_PI), wn[1] / (2 * HG_PI), wn[2] / (2 * HG_PI));
     for (i = 0; i < 3; i++) {
         CHECK_CLOSE(z[i], ZETA[i], 0.02, 0.0);
         CHECK_CLOSE(wn[i], m.omega[i + 1], 0.01, 0.0);

@@ -8,10 +8,10 @@
 #include <stdio.h>
 
 #include "check.h"
+#include "io/constants.h"
 #include "io/datafile.h"
 #include "mesh/phase_table.h"
 
-#define TWO_PI 6.283185307179586
 #define N_POINTS 3001
 
 /* The ripple's scale: the sum of the harmonics' amplitudes (the mean for a constant series). */
@@ -71,7 +71,7 @@ static void compare_at(const hg_gearset *g, const hg_phase_tables *ts, int fl, d
     hg_gearset_level_at(g, fl, T, &b);
     y = g->s[b.flank][b.lo].y;
     for (j = 0; j < N_POINTS; j++) {
-        double theta = 3.0 * TWO_PI * (j + 0.37) / N_POINTS, sum = 0.0;
+        double theta = 3.0 * HG_TWO_PI * (j + 0.37) / N_POINTS, sum = 0.0;
         hg_mesh_point a, m;
         hg_pair_geometry p, q, r;
         hg_pt_cell cell;

@@ -11,8 +11,7 @@
 #include <string.h>
 
 #include "check.h"
-
-static const double PI = 3.14159265358979323846;
+#include "io/constants.h"
 
 typedef struct {
     double w, zeta; /* [rad/s], [1] */
@@ -47,8 +46,8 @@ static double x_exact(const oscillator *o, double t)
 static double zero_exact(const oscillator *o, int k)
 {
     double wd = w_d(o);
-    double first = o->zeta > 0.0 ? PI - atan(wd / (o->zeta * o->w)) : PI / 2.0;
-    return (first + k * PI) / wd;
+    double first = o->zeta > 0.0 ? HG_PI - atan(wd / (o->zeta * o->w)) : HG_PI / 2.0;
+    return (first + k * HG_PI) / wd;
 }
 
 static hg_solver *make(hg_method method, oscillator *o, int n_roots, double h)
@@ -76,8 +75,8 @@ static hg_solver *make(hg_method method, oscillator *o, int n_roots, double h)
 /* Two periods in communication steps of a tenth of a period: x against the closed form. */
 static void check_trajectory(hg_method method, double zeta, double tol)
 {
-    oscillator o = {2.0 * PI * 5.0, zeta};
-    double T = 2.0 * PI / o.w, t = 0.0, y[2];
+    oscillator o = {2.0 * HG_PI * 5.0, zeta};
+    double T = 2.0 * HG_PI / o.w, t = 0.0, y[2];
     char err[256] = "";
     hg_solver *s = make(method, &o, 0, T / 4000.0);
     long steps = 0, evals = 0;
@@ -97,8 +96,8 @@ static void check_trajectory(hg_method method, double zeta, double tol)
 /* The first four zeros of x as root events, with their directions. */
 static void check_roots(hg_method method, double zeta, double tol)
 {
-    oscillator o = {2.0 * PI * 5.0, zeta};
-    double T = 2.0 * PI / o.w, t = 0.0, y[2];
+    oscillator o = {2.0 * HG_PI * 5.0, zeta};
+    double T = 2.0 * HG_PI / o.w, t = 0.0, y[2];
     char err[256] = "";
     hg_solver *s = make(method, &o, 1, T / 4000.0);
     int k, dir[1];
@@ -118,8 +117,8 @@ static void check_roots(hg_method method, double zeta, double tol)
 /* Newmark's own closed form: the rotation by 2 atan(w h / 2) per step, amplitude kept. */
 static void check_newmark_discrete(void)
 {
-    oscillator o = {2.0 * PI * 5.0, 0.0};
-    double T = 2.0 * PI / o.w, h = T / 64.0, t = 0.0, y[2];
+    oscillator o = {2.0 * HG_PI * 5.0, 0.0};
+    double T = 2.0 * HG_PI / o.w, h = T / 64.0, t = 0.0, y[2];
     double angle = 2.0 * atan(o.w * h / 2.0);
     char err[256] = "";
     hg_solver *s = make(HG_METHOD_NEWMARK, &o, 0, h);
@@ -132,7 +131,7 @@ static void check_newmark_discrete(void)
     }
     /* and not the exact solution (x' = 0 after a period): at 64 steps a period the phase lags by
      * 2 pi (w h)^2 / 12 = 5.0e-3 rad, so x' = w sin(5.0e-3) */
-    CHECK_CLOSE(y[1], o.w * sin(2.0 * PI * pow(2.0 * PI / 64.0, 2) / 12.0), 2e-3, 0.0);
+    CHECK_CLOSE(y[1], o.w * sin(2.0 * HG_PI * pow(2.0 * HG_PI / 64.0, 2) / 12.0), 2e-3, 0.0);
     hg_solver_free(s);
 }
 
@@ -142,8 +141,8 @@ static void check_newmark_discrete(void)
  * closed form and a fraction of the steps. */
 static long dense_points(hg_method method, int pass, double tol)
 {
-    oscillator o = {2.0 * PI * 5.0, 0.05};
-    double T = 2.0 * PI / o.w, t = 0.0, y[2];
+    oscillator o = {2.0 * HG_PI * 5.0, 0.05};
+    double T = 2.0 * HG_PI / o.w, t = 0.0, y[2];
     char err[256] = "";
     hg_solver *s = make(method, &o, 0, 0.0);
     long steps = 0, evals = 0;

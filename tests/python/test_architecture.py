@@ -105,3 +105,13 @@ def test_errors_are_written_by_hg_errorf():
         if path.parent.name == "fmi":
             assert not re.search(r"#define \w+ \(ST_", text), (
                 f"fmu-src/{rel}: use the state masks of fmi/instance.h")
+
+
+def test_pi_is_defined_once():
+    """pi and its multiples come from io/constants.h; no file spells them again."""
+    spelled = re.compile(r"3\.14159|6\.28318|9\.54929|\bM_PI\b")
+    for path in sorted(SRC.glob("*/*.[ch]")):
+        rel = path.relative_to(SRC).as_posix()
+        if rel != "io/constants.h":
+            assert not spelled.search(path.read_text(encoding="utf-8")), (
+                f"fmu-src/{rel}: use HG_PI, HG_TWO_PI or HG_RPM_PER_RAD_S of io/constants.h")
