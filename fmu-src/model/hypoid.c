@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "io/constants.h"
+#include "model/friction_table_policy.h"
 #include "model/outputs.h"
 #include "model/setup.h"
 #include "model/stepping.h"
@@ -39,19 +39,12 @@ hg_model *hg_model_new(const char *resource_dir, hg_log_fn log, void *log_ctx)
     return m;
 }
 
-static void free_tables(hg_model *m)
-{
-    if (m->tables) hg_ft_set_free(m->tables);
-    free(m->tables);
-    m->tables = NULL;
-}
-
 void hg_model_free(hg_model *m)
 {
     if (!m) return;
     hg_solver_free(m->solver);
     hg_setup_free(&m->s);
-    free_tables(m);
+    hg_ftp_free(&m->tables);
     free(m->resource_dir);
     free(m);
 }
@@ -96,92 +89,7 @@ static int make_solver(hg_model *m, char *err, size_t errlen)
     return m->solver ? 0 : -1;
 }
 
-/* ------------------------------------------------------------------ the friction table */
-
-/* The paper's Newmark scheme, the reference of the comparisons, solves the friction model itself
- * (its Newton iteration with a difference Jacobian also failed to converge on the table in a
- * torque reversal at 10 rpm on the rigid mesh, an extremes case). */
-static int wants_table(const hg_setup *s, const hg_vars *v)
-{
-    return v->friction_table && s->solver != HG_SOLVER_NEWMARK &&
-           (v->friction_model == HG_FRICTION_MODEL_EHL_THERMAL ||
-            v->friction_model == HG_FRICTION_MODEL_EHL_ISOTHERMAL);
-}
-
-static int setup_table(hg_model *m, const hg_vars *v, char *err, size_t errlen)
-{
-    m->s.p.tables = NULL;
-    if (!wants_table(&m->s, v)) {
-        free_tables(m);
-        return 0;
-    }
-    if ((!m->tables && !(m->tables = calloc(1, sizeof *m->tables))) ||
-        hg_ft_set_alloc(m->tables, &m->s.gear, m->s.p.mesh == HG_MESH_MODEL_RIGID)) {
-        free_tables(m);
-        hg_errorf(err, errlen, "out of memory for the friction tables");
-        return -1;
-    }
-    return 0;
-}
-
-/* Keeps the tables' key on the operating point at the start of a step: speed, oil temperature
- * and a load estimate (input torque over the mean radius, or the mean spring force). The key
- * lives in the runtime, so a restored state rebuilds the very tables it was run with. Returns 1
- * when the key of the tables changes; near standstill, where the direct solve runs instead
- * (hg_ft_speed_tabulated), 0. */
-static int table_stale(hg_model *m, const hg_inputs *u)
-{
-    hg_runtime *rt = &m->rt;
-    hg_dyn_params *p = &m->s.p;
-    double w_p = rt->y[HG_Y_W_P], T_oil = hg_dyn_oil_temperature(p, u, rt->y), W;
-    if (!m->tables || !hg_ft_speed_tabulated(w_p)) return 0;
-    W = fmax(fabs(u->T_s) / p->R_p0,
-             p->k_m0 * fabs(hg_backlash_f(&p->backlash, rt->y[HG_Y_X], rt->mode)));
-    if (!rt->ft_valid || !hg_ft_key_covers(&rt->ft_key, w_p, T_oil, W)) {
-        hg_ft_key_next(&rt->ft_key, rt->ft_valid, w_p, p->ratio, T_oil, W);
-        rt->ft_valid = 1;
-    }
-    return !m->tables->keyed || memcmp(&m->tables->key, &rt->ft_key, sizeof rt->ft_key);
-}
-
-/* A new key changes the right-hand side (within the tables' error): like a jump of the inputs
- * it restarts the integrator, whose history saw the old one. The tables of the levels the
- * filtered torque picks now are built here, others when the right-hand side first asks. */
-static void build_table(hg_model *m)
-{
-    const hg_runtime *rt = &m->rt;
-    hg_level_pick b;
-    m->tables->key = rt->ft_key;
-    m->tables->keyed = 1;
-    hg_gearset_level_at(&m->s.gear, rt->mode == HG_MODE_BACK ? HG_FLANK_COAST : HG_FLANK_DRIVE,
-                        rt->y[HG_Y_T_KM], &b);
-    hg_ft_set_table(m->tables, &m->s.p.friction, &m->s.gear, b.flank, b.lo);
-    if (b.hi != b.lo) hg_ft_set_table(m->tables, &m->s.p.friction, &m->s.gear, b.flank, b.hi);
-    hg_logf(&m->log, "logEvents", "t = %.6f s: friction table built for %.1f rpm, T_oil = "
-            "%.2f degC, pair loads up to %.0f N", rt->t, rt->ft_key.w_p * HG_RPM_PER_RAD_S,
-            rt->ft_key.T_bath - 273.15, rt->ft_key.W_max);
-}
-
-/* The tables the right-hand side uses this step (after table_stale and any build): none without
- * them or near standstill (the direct solve then runs; also for a table that is not usable). */
-static hg_ft_set *table_in_use(const hg_model *m)
-{
-    return m->tables && hg_ft_speed_tabulated(m->rt.y[HG_Y_W_P]) ? m->tables : NULL;
-}
-
 /* ------------------------------------------------------------------ outputs */
-
-/* The friction tables the state ran on (NULL: the direct solve), so that a state's outputs are
- * those of its right-hand side whatever ran since: after a restored state or a failed step the
- * model's tables may have been keyed for another key, and are then keyed again for the state's. */
-static hg_ft_set *table_of_state(hg_model *m)
-{
-    const hg_runtime *rt = &m->rt;
-    if (!rt->ft_in_use || !m->tables) return NULL;
-    if (!m->tables->keyed || memcmp(&m->tables->key, &rt->ft_key, sizeof rt->ft_key))
-        build_table(m);
-    return m->tables;
-}
 
 static void write_outputs(hg_model *m, hg_vars *v, int set)
 {
@@ -191,7 +99,8 @@ static void write_outputs(hg_model *m, hg_vars *v, int set)
         hg_outputs_pairs(&m->s, &m->rt, v);
     } else {
         if (m->solver) hg_solver_stats(m->solver, &steps, &evals);
-        m->s.p.tables = table_of_state(m); /* the same unless restored or failed: a restart */
+        /* the same unless restored or failed: a restart */
+        m->s.p.tables = hg_ftp_of_state(m->tables, &m->rt, &m->s, &m->log);
         hg_outputs_main(&m->s, &m->rt, steps, evals, v);
     }
     m->outputs_current[set] = 1;
@@ -221,7 +130,7 @@ int hg_model_setup(hg_model *m, hg_vars *v, double t0, char *err, size_t errlen)
 {
     const hg_setup *s = &m->s;
     if (hg_setup_load(&m->s, m->resource_dir, &m->log, v, err, errlen) ||
-        setup_table(m, v, err, errlen))
+        hg_ftp_setup(&m->tables, &m->s, v, err, errlen))
         return -1;
     hg_stepping_start(&m->rt, &m->s, v, t0);
     if (make_solver(m, err, errlen)) return -1;
@@ -263,19 +172,17 @@ static void begin_inputs(hg_model *m, const hg_vars *v, const hg_inputs *du, dou
     int rebuild, keep;
     hg_vars_inputs(v, &u);
     change = hg_stepping_change(rt, &u, du);
-    rebuild = table_stale(m, &u);
+    rebuild = hg_ftp_stale(m->tables, rt, &m->s.p, &u);
     keep = m->s.explicit_rk && !rt->restart && (change == HG_INPUTS_JUMP || rebuild);
     if (change == HG_INPUTS_JUMP || rebuild || (rt->ahead && change != HG_INPUTS_SAME))
         rt->restart = 1;
     if (keep) rhs_now(m, &rt->u_end, f_old);
     hg_stepping_begin(rt, &m->s, &u, du, change);
-    if (rebuild) build_table(m);
-    if (table_in_use(m) != m->s.p.tables) { /* to or from the direct solve: a full restart */
-        m->s.p.tables = table_in_use(m);
+    /* after the old right-hand side's last use: to or from the direct solve is a full restart */
+    if (hg_ftp_begin(m->tables, rt, &m->s, rebuild, &m->log)) {
         rt->restart = 1;
         keep = 0;
     }
-    rt->ft_in_use = m->s.p.tables != NULL;
     if (keep) rhs_now(m, &u, f_new);
     *h0 = keep && hg_stepping_jump_small(rt, &m->s, f_old, f_new) ? rt->h_int : 0.0;
 }
