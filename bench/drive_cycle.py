@@ -19,7 +19,8 @@ import time
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from hypoid.drivecycle import run as drivecycle  # noqa: E402
+from hypoid.drivecycle import cycles, levels, summary  # noqa: E402
+from hypoid.drivecycle import run as runner  # noqa: E402
 
 
 def cpu_seconds():
@@ -29,12 +30,12 @@ def cpu_seconds():
 
 def run(cycle, level, args):
     wall, cpu = time.perf_counter(), cpu_seconds()
-    r = drivecycle.simulate(cycle, args.fmu, args.vehicle_fmu, level, args.t_oil0 + 273.15,
+    r = runner.simulate(cycle, args.fmu, args.vehicle_fmu, level, args.t_oil0 + 273.15,
                             args.t_amb + 273.15, args.step, {}, level)
     wall, cpu = time.perf_counter() - wall, cpu_seconds() - cpu
-    s = drivecycle.summarise(r, cycle, args.step)
+    s = summary.summarise(r, cycle, args.step)
     span = cycle.t[-1] - cycle.t[0]
-    return {"level": level, "settings": drivecycle.LEVELS[level], "wall_s": wall, "cpu_s": cpu,
+    return {"level": level, "settings": levels.LEVELS[level], "wall_s": wall, "cpu_s": cpu,
             "real_time_factor_wall": span / wall, "real_time_factor_cpu": span / cpu,
             "axle_loss_J": s["axle_loss_J"], "axle_losses_J": s["axle_losses_J"],
             "mean_axle_efficiency": s["mean_axle_efficiency"],
@@ -51,13 +52,13 @@ def main():
     ap.add_argument("--t-amb", type=float, default=20.0)
     ap.add_argument("--t-oil0", type=float, default=20.0)
     ap.add_argument("--fmu", default=str(ROOT / "build" / "HypoidGearPair.fmu"))
-    ap.add_argument("--vehicle-fmu", default=str(drivecycle.DEFAULT_VEHICLE_FMU))
+    ap.add_argument("--vehicle-fmu", default=str(runner.DEFAULT_VEHICLE_FMU))
     ap.add_argument("--json", default=str(ROOT / "bench" / "drive_cycle.json"))
     args = ap.parse_args()
-    cycle = drivecycle.load_cycle(args.cycle)
+    cycle = cycles.load_cycle(args.cycle)
     if args.until:
         keep = cycle.t <= args.until
-        cycle = drivecycle.Cycle(f"{cycle.name}_to_{args.until:g}s", cycle.t[keep],
+        cycle = cycles.Cycle(f"{cycle.name}_to_{args.until:g}s", cycle.t[keep],
                                  cycle.v[keep], [p for p in cycle.phases if p[1] < args.until],
                                  cycle.source)
     results = [run(cycle, level, args) for level in args.levels]

@@ -16,7 +16,7 @@ TOOLS = {
     "sweep": ("hypoid.study.sweep", "grid of steady-state points or continuation sweeps (dask, resume)"),
     "study": ("hypoid.study.paper", "the paper's studies: tables, plots and a report (default, full)"),
     "regress": ("hypoid.regress", "compare FMU outputs with regression references (--update)"),
-    "drive-cycle": ("hypoid.drivecycle.run", "the axle in a car over WLTC, NEDC or a CSV cycle: losses, oil "
+    "drive-cycle": ("hypoid.cli.drive_cycle", "the axle in a car over WLTC, NEDC or a CSV cycle: losses, oil "
                     "temperature"),
 }
 

@@ -109,7 +109,91 @@ class Execution:
         """The last values of the Real variables with these references."""
         return self.last.last_real_values(self.index[name], refs)
 
+    def record(self, variables, n):
+        """A time-series observer of {instance: [Real variable]} for n samples (steps 0 .. n-1;
+        libcosim's default buffer keeps 10 000)."""
+        from libcosimpy.CosimEnums import CosimVariableType
+        from libcosimpy.CosimObserver import CosimObserver
+
+        self.series_observer = CosimObserver.create_time_series(buffer_size=n)
+        self.ex.add_observer(self.series_observer)
+        for name, names in variables.items():
+            for var in names:
+                self.series_observer.start_time_series(self.index[name], self.ref(name, var),
+                                                       CosimVariableType.REAL)
+
+    def series(self, name, var, n):
+        """(values, times in s) of a recorded variable over steps 0 .. n-1. libcosimpy's
+        time_series_real_samples drops a sample when step 0 is among them: this calls the C
+        function directly."""
+        import ctypes
+
+        import numpy as np
+        from libcosimpy._internal import libcosimc, wrap_function
+
+        get = wrap_function(lib=libcosimc(), funcname="cosim_observer_slave_get_real_samples",
+                            argtypes=[ctypes.c_void_p, ctypes.c_int, ctypes.c_uint32,
+                                      ctypes.c_int64, ctypes.c_size_t,
+                                      ctypes.POINTER(ctypes.c_double),
+                                      ctypes.POINTER(ctypes.c_int64),
+                                      ctypes.POINTER(ctypes.c_int64)],
+                            restype=ctypes.c_int64)
+        values, steps = np.empty(n), np.empty(n, dtype=np.int64)
+        times = np.empty(n, dtype=np.int64)
+        got = get(ctypes.cast(self.series_observer.ptr(), ctypes.c_void_p), self.index[name],
+                  self.ref(name, var), 0, n, values.ctypes.data_as(ctypes.POINTER(ctypes.c_double)),
+                  steps.ctypes.data_as(ctypes.POINTER(ctypes.c_int64)),
+                  times.ctypes.data_as(ctypes.POINTER(ctypes.c_int64)))
+        if got != n or not np.array_equal(steps, np.arange(n)):
+            raise RuntimeError(f"libcosim observer: {got} samples of {name}.{var}, not {n}")
+        return values, times * 1e-9
+
     def close(self):
-        """Frees the C side (observer and manipulator before the execution, slaves last)."""
-        for attr in ("last", "override", "ex", "slaves"):
+        """Frees the C side (observers and manipulator before the execution, slaves last)."""
+        for attr in ("series_observer", "last", "override", "ex", "slaves"):
             self.__dict__.pop(attr, None)
+
+
+class GearVehicle:
+    """hypoid.cosim.master.GearVehicle's scene in libcosim's fixed-step (Jacobi) algorithm, with
+    the integer-coded gear FMU: T_hs -> T_w and w_w -> w_w are libcosim connections, the callers'
+    inputs go in through the override manipulator before each step. `record` = n keeps every
+    output over steps 0 .. n-1 (series()); libcosim initialises inside the first step, so the
+    outputs of step() are those after it."""
+
+    def __init__(self, gear_fmu, vehicle_fmu, gear_start, vehicle_start, h, gear_out,
+                 vehicle_out, gear_inputs=("T_s",), vehicle_inputs=(), record=0):
+        from hypoid.fmu.values import TABLE
+
+        self.ex = Execution(h)
+        self.ex.add("gear", intenum_fmu(gear_fmu))
+        self.ex.add("vehicle", vehicle_fmu)
+        self.ex.initial("gear", {var.name: x for var, x in TABLE.fmu_values(gear_start)})
+        self.ex.initial("vehicle", vehicle_start)
+        self.ex.connect("vehicle", "T_hs", "gear", "T_w")
+        self.ex.connect("gear", "w_w", "vehicle", "w_w")
+        self.gear_out, self.vehicle_out = list(gear_out), list(vehicle_out)
+        self.g_refs = [self.ex.ref("gear", x) for x in gear_out]
+        self.v_refs = [self.ex.ref("vehicle", x) for x in vehicle_out]
+        self.gear_inputs, self.vehicle_inputs = list(gear_inputs), list(vehicle_inputs)
+        self.n_record = record
+        if record:
+            self.ex.record({"gear": gear_out, "vehicle": vehicle_out}, record)
+
+    def step(self, t=None, h=None, gear_inputs=(), vehicle_inputs=()):
+        """One step of the execution's own size (t and h as the fmpy master takes them, unused)."""
+        if self.gear_inputs:
+            self.ex.set_reals("gear", self.gear_inputs, gear_inputs)
+        if self.vehicle_inputs:
+            self.ex.set_reals("vehicle", self.vehicle_inputs, vehicle_inputs)
+        self.ex.step()
+        return self.ex.reals("gear", self.g_refs), self.ex.reals("vehicle", self.v_refs)
+
+    def series(self):
+        """(times in s, {gear output: values}, {vehicle output: values}) of the recorded steps."""
+        gear = {x: self.ex.series("gear", x, self.n_record)[0] for x in self.gear_out}
+        vehicle = {x: self.ex.series("vehicle", x, self.n_record)[0] for x in self.vehicle_out}
+        return self.ex.series("gear", self.gear_out[0], self.n_record)[1], gear, vehicle
+
+    def close(self):
+        self.ex.close()

@@ -172,22 +172,45 @@ class Instance:
     def reals(self, names):
         return self._call(self.slave.getReal, [self.ref(n) for n in names])
 
+    def refs(self, names):
+        """The value references of the named variables, for get_reals and set_reals."""
+        return [self.ref(n) for n in names]
+
+    def get_reals(self, refs):
+        """The Real variables with these value references (a master's hot loop)."""
+        return self._call(self.slave.getReal, refs)
+
+    def set_reals(self, refs, values):
+        """Real inputs by value reference, unconverted (a master's hot loop)."""
+        self._call(self.slave.setReal, refs, values)
+
     def ints(self, names):
         return self._call(self.slave.getInteger, [self.ref(n) for n in names])
 
     # ------------------------------------------------------------------ life cycle
     def start(self, params=None, start_time=0.0, stop_time=None):
         """fmi2Reset (if used before), set the start values, initialise at start_time."""
+        self.setup(start_time, stop_time)
+        self.set_many(params or {})
+        self.enter_initialization()
+        self.exit_initialization()
+        return self
+
+    def setup(self, start_time=0.0, stop_time=None):
+        """fmi2Reset (if used before) and fmi2SetupExperiment: start() up to the start values,
+        for a master that initialises several FMUs together."""
         if self.used:
             self._call(self.slave.reset)
         self.used = True
         self.messages.clear()
         self._call(self.slave.setupExperiment, startTime=start_time, stopTime=stop_time)
-        self.set_many(params or {})
-        self._call(self.slave.enterInitializationMode)
-        self._call(self.slave.exitInitializationMode)
         self.t = start_time
-        return self
+
+    def enter_initialization(self):
+        self._call(self.slave.enterInitializationMode)
+
+    def exit_initialization(self):
+        self._call(self.slave.exitInitializationMode)
 
     def do_step(self, t, h):
         self._call(self.slave.doStep, currentCommunicationPoint=t, communicationStepSize=h)

@@ -21,7 +21,6 @@ inputs held at the values of t_n, then outputs are transferred:
 """
 
 import argparse
-import ctypes
 import json
 import math
 import pathlib
@@ -33,7 +32,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from hypoid.cosim.libcosim import step_ns, why_unavailable as libcosim_available
+from hypoid.cosim.libcosim import Execution, step_ns, why_unavailable as libcosim_available
+from hypoid.cosim.libcosim import GearVehicle as LibcosimGearVehicle
+from hypoid.cosim.master import GearVehicle
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 GEAR_FMU = ROOT / "build" / "HypoidGearPair.fmu"
@@ -164,124 +165,39 @@ def difference(a, b, names=("gear.w_p", "gear.T_w_out", "gear.eta"), h=None):
 
 
 def libcosim_variables(path):
-    """{name: libcosim's variable type (CosimVariableType)} of every variable libcosim loads from
-    the FMU at path (it leaves out the types it does not support)."""
-    from libcosimpy.CosimExecution import CosimExecution
-    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
-    from libcosimpy.CosimSlave import CosimLocalSlave
-
-    log_output_level(CosimLogLevel.ERROR)
-    ex = CosimExecution.from_step_size(step_ns(1e-3))
-    slave = CosimLocalSlave(fmu_path=str(path), instance_name="probe")
-    i = ex.add_local_slave(slave)
-    assert i >= 0, f"libcosim could not load {path}"
-    names = {v.name.decode(): v.type for v in ex.slave_variables(i)}
-    del ex, slave
-    return names
+    """{name: libcosim's variable type} of every variable libcosim loads from the FMU at path (it
+    leaves out the types it does not support)."""
+    ex = Execution(1e-3)
+    try:
+        ex.add("probe", path)
+        return {name: typ for name, (_, typ) in ex.vars["probe"].items()}
+    finally:
+        ex.close()
 
 
-def run_libcosim(scene, h, gear_fmu=GEAR_INTENUM_FMU, vehicle_fmu=VEHICLE_FMU):
-    """The scene in libcosim's fixed-step (Jacobi) master, with the build's integer-coded gear FMU
-    (load_mode = torque is an Integer there). T_s goes in through the override manipulator before
-    every step; a time-series observer records every step including the initial state (step 0)."""
-    from libcosimpy._internal import libcosimc, wrap_function
-    from libcosimpy.CosimEnums import CosimVariableType
-    from libcosimpy.CosimExecution import CosimExecution
-    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
-    from libcosimpy.CosimManipulator import CosimManipulator
-    from libcosimpy.CosimObserver import CosimObserver
-    from libcosimpy.CosimSlave import CosimLocalSlave
-
-    log_output_level(CosimLogLevel.ERROR)
+def run_libcosim(scene, h, gear_fmu=GEAR_FMU, vehicle_fmu=VEHICLE_FMU):
+    """The scene in libcosim's fixed-step (Jacobi) master (hypoid.cosim.libcosim.GearVehicle, with
+    the build's integer-coded gear FMU next to gear_fmu: load_mode = torque is an Integer there).
+    T_s goes in through the override manipulator before every step; a time-series observer
+    records every step including the initial state (step 0)."""
     wall = time.perf_counter()
-    ex = CosimExecution.from_step_size(step_ns(h))
-    slaves = {}
-    idx = {}
-    for name, path in (("gear", gear_fmu), ("vehicle", vehicle_fmu)):
-        slaves[name] = CosimLocalSlave(fmu_path=str(path), instance_name=name)
-        idx[name] = ex.add_local_slave(slaves[name])
-        assert idx[name] >= 0, f"libcosim could not load {path}"
-    vr = {name: {v.name.decode(): (v.reference, v.type) for v in ex.slave_variables(i)}
-          for name, i in idx.items()}
-
-    def initial(name, values):
-        for var, value in values.items():
-            ref, typ = vr[name][var]
-            ok = ex.integer_initial_value(idx[name], ref, int(value)) if typ == 1 else \
-                ex.real_initial_value(idx[name], ref, float(value))
-            assert ok, f"libcosim: initial value {name}.{var} = {value} refused"
-
-    initial("gear", scene.gear_start())
-    initial("vehicle", scene.vehicle_start())
-    ok = ex.connect_real_variables(idx["vehicle"], vr["vehicle"]["T_hs"][0], idx["gear"],
-                                   vr["gear"]["T_w"][0])
-    ok = ok == 0 and ex.connect_real_variables(idx["gear"], vr["gear"]["w_w"][0],
-                                               idx["vehicle"], vr["vehicle"]["w_w"][0]) == 0
-    assert ok, "libcosim: connecting the FMUs failed"
-    manipulator = CosimManipulator.create_override()
-    ex.add_manipulator(manipulator)
     n = n_steps(scene, h)
-    observer = CosimObserver.create_time_series(buffer_size=n + 1)  # the default keeps 10 000
-    ex.add_observer(observer)
-    for name, names in (("gear", GEAR_OUT), ("vehicle", VEHICLE_OUT)):
-        for var in names:
-            observer.start_time_series(idx[name], vr[name][var][0], CosimVariableType.REAL)
-
-    ns = step_ns(h)
-    t_s = np.empty(n + 1)
-    ref_ts = [vr["gear"]["T_s"][0]]
-    for k in range(n):
-        t_s[k] = scene.torque(k * ns * 1e-9)
-        manipulator.slave_real_values(idx["gear"], ref_ts, [t_s[k]])
-        if not ex.step():
-            raise RuntimeError(f"libcosim step {k} failed: {ex.status()}")
-    t_s[n] = t_s[n - 1]
-
-    # libcosimpy's time_series_real_samples drops a sample when step 0 is among them: call the C
-    # function directly.
-    get = wrap_function(lib=libcosimc(), funcname="cosim_observer_slave_get_real_samples",
-                        argtypes=[ctypes.c_void_p, ctypes.c_int, ctypes.c_uint32, ctypes.c_int64,
-                                  ctypes.c_size_t, ctypes.POINTER(ctypes.c_double),
-                                  ctypes.POINTER(ctypes.c_int64), ctypes.POINTER(ctypes.c_int64)],
-                        restype=ctypes.c_int64)
-    values = np.empty(n + 1)
-    steps = np.empty(n + 1, dtype=np.int64)
-    times = np.empty(n + 1, dtype=np.int64)
-    series = {}
-    for name, names in (("gear", GEAR_OUT), ("vehicle", VEHICLE_OUT)):
-        series[name] = {}
-        for var in names:
-            got = get(ctypes.cast(observer.ptr(), ctypes.c_void_p), idx[name], vr[name][var][0], 0,
-                      n + 1, values.ctypes.data_as(ctypes.POINTER(ctypes.c_double)),
-                      steps.ctypes.data_as(ctypes.POINTER(ctypes.c_int64)),
-                      times.ctypes.data_as(ctypes.POINTER(ctypes.c_int64)))
-            assert got == n + 1 and np.array_equal(steps, np.arange(n + 1)), \
-                f"libcosim observer: {got} samples of {name}.{var}"
-            series[name][var] = values.copy()
-    t = times * 1e-9
-    # keep the objects alive until here (their destructors free the C side)
-    del observer, manipulator, ex, slaves
-    return Result("libcosim", h, t, t_s, series["gear"], series["vehicle"],
-                  time.perf_counter() - wall)
+    m = LibcosimGearVehicle(gear_fmu, vehicle_fmu, scene.gear_start(), scene.vehicle_start(), h,
+                            GEAR_OUT, VEHICLE_OUT, gear_inputs=("T_s",), record=n + 1)
+    try:
+        ns = step_ns(h)
+        t_s = np.empty(n + 1)
+        for k in range(n):
+            t_s[k] = scene.torque(k * ns * 1e-9)
+            m.step(gear_inputs=[t_s[k]])
+        t_s[n] = t_s[n - 1]
+        t, gear, vehicle = m.series()
+    finally:
+        m.close()
+    return Result("libcosim", h, t, t_s, gear, vehicle, time.perf_counter() - wall)
 
 
 # ------------------------------------------------------------------ our own master with fmpy
-
-
-class _Slave:
-    """One FMU through hypoid.fmu.instance.Instance; `fmu` is the raw fmpy slave the master drives
-    call by call."""
-
-    def __init__(self, path, name, workdir):
-        from hypoid.fmu.instance import Instance
-        self.inst = Instance(path, name=name)
-        self.fmu = self.inst.slave
-
-    def vr(self, names):
-        return [self.inst.ref(n) for n in names]
-
-    def set_start(self, values):
-        self.inst.set_many(values)
 
 
 def comm_times(n, ns, times="fmpy"):
@@ -299,74 +215,28 @@ def comm_times(n, ns, times="fmpy"):
 
 def run_fmpy(scene, h, algorithm="jacobi", gear_fmu=GEAR_FMU, vehicle_fmu=VEHICLE_FMU,
              times="fmpy"):
-    """The scene in a fixed-step master written here with hypoid.fmu.instance (fmpy's FMU2Slave).
+    """The scene in the package's fixed-step master (hypoid.cosim.master.GearVehicle, fmpy).
 
-    jacobi: libcosim's fixed_step_algorithm call for call: start values in the instantiated
-      state, fmi2SetupExperiment(start 0, no stop time), initialization mode with as many
-      set-inputs / get-outputs / transfer passes as there are FMUs, the transferred inputs set,
-      exit, get outputs, transfer; then per step
-      set the held inputs on both, step both, get outputs, transfer.
+    jacobi: libcosim's fixed_step_algorithm call for call: start values, fmi2SetupExperiment
+      (start 0, no stop time), initialization mode with as many set-inputs / get-outputs /
+      transfer passes as there are FMUs, the transferred inputs set, exit, get outputs, transfer;
+      then per step set the held inputs on both, step both, get outputs, transfer.
     gauss-seidel: the gear steps first; the vehicle then steps with the gear's new w_w.
     times: the communication points and step sizes passed to fmi2DoStep (comm_times)."""
-    if algorithm not in ("jacobi", "gauss-seidel"):
-        raise ValueError(algorithm)
     wall = time.perf_counter()
-    workdir = tempfile.mkdtemp(prefix="cosim-fmpy-")
-    try:
-        gear = _Slave(gear_fmu, "gear", workdir)
-        veh = _Slave(vehicle_fmu, "vehicle", workdir)
-        gear.set_start(scene.gear_start())
-        veh.set_start(scene.vehicle_start())
-        vr_g_in, vr_v_in = gear.vr(["T_s", "T_w"]), veh.vr(["w_w"])
-        vr_g_out, vr_v_out = gear.vr(GEAR_OUT), veh.vr(VEHICLE_OUT)
-        i_ww, i_ths = GEAR_OUT.index("w_w"), VEHICLE_OUT.index("T_hs")
-        for s in (gear, veh):
-            s.fmu.setupExperiment(startTime=0.0)
-        for s in (gear, veh):
-            s.fmu.enterInitializationMode()
-        t_s0 = scene.torque(0.0)
-        t_w = scene.gear_start()["T_w"]
-        w_w = scene.vehicle_start().get("w_w", 0.0)
-        for _ in range(2):  # libcosim: one pass per FMU: set inputs, get outputs, transfer
-            gear.fmu.setReal(vr_g_in, [t_s0, t_w])
-            veh.fmu.setReal(vr_v_in, [w_w])
-            g_out, v_out = gear.fmu.getReal(vr_g_out), veh.fmu.getReal(vr_v_out)
-            w_w, t_w = g_out[i_ww], v_out[i_ths]
-        gear.fmu.setReal(vr_g_in, [t_s0, t_w])  # the last transfer goes in before the exit
-        veh.fmu.setReal(vr_v_in, [w_w])
-        for s in (gear, veh):
-            s.fmu.exitInitializationMode()
-        g_out, v_out = gear.fmu.getReal(vr_g_out), veh.fmu.getReal(vr_v_out)
-        w_w, t_w = g_out[i_ww], v_out[i_ths]
-
-        n = n_steps(scene, h)
-        g_rows, v_rows = [g_out], [v_out]
-        t, steps = comm_times(n, step_ns(h), times)
-        t_s = np.empty(n + 1)
+    n = n_steps(scene, h)
+    t, steps = comm_times(n, step_ns(h), times)
+    t_s = np.empty(n + 1)
+    with GearVehicle(gear_fmu, vehicle_fmu, scene.gear_start(), scene.vehicle_start(), GEAR_OUT,
+                     VEHICLE_OUT, gear_inputs=("T_s",), algorithm=algorithm,
+                     init_passes=2) as m:
+        g_rows, v_rows = [m.outputs[0]], [m.outputs[1]]
         for k in range(n):
-            tk, hk = float(t[k]), float(steps[k])
-            t_s[k] = scene.torque(tk)
-            gear.fmu.setReal(vr_g_in, [t_s[k], t_w])
-            if algorithm == "jacobi":
-                veh.fmu.setReal(vr_v_in, [w_w])
-                gear.fmu.doStep(tk, hk)
-                veh.fmu.doStep(tk, hk)
-                g_out, v_out = gear.fmu.getReal(vr_g_out), veh.fmu.getReal(vr_v_out)
-            else:
-                gear.fmu.doStep(tk, hk)
-                g_out = gear.fmu.getReal(vr_g_out)
-                veh.fmu.setReal(vr_v_in, [g_out[i_ww]])
-                veh.fmu.doStep(tk, hk)
-                v_out = veh.fmu.getReal(vr_v_out)
-            w_w, t_w = g_out[i_ww], v_out[i_ths]
+            t_s[k] = scene.torque(float(t[k]))
+            g_out, v_out = m.step(float(t[k]), float(steps[k]), [t_s[k]])
             g_rows.append(g_out)
             v_rows.append(v_out)
-        t_s[n] = t_s[n - 1]
-        for s in (gear, veh):
-            s.fmu.terminate()
-            s.fmu.freeInstance()
-    finally:
-        shutil.rmtree(workdir, ignore_errors=True)
+    t_s[n] = t_s[n - 1]
     g_arr, v_arr = np.array(g_rows), np.array(v_rows)
     return Result(f"fmpy-{algorithm}", h, t, t_s,
                   {name: g_arr[:, j] for j, name in enumerate(GEAR_OUT)},

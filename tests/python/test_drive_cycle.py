@@ -11,7 +11,8 @@ import numpy as np
 import pytest
 
 from hypoid import cli
-from hypoid.drivecycle import run as drivecycle
+from hypoid.drivecycle import cycles, levels, summary
+from hypoid.drivecycle import run as runner
 from hypoid.fmu.instance import TABLE, Instance
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -19,13 +20,13 @@ VEHICLE_FMU = ROOT / "build" / "LongitudinalVehicle.fmu"
 
 
 def test_wltc3_and_nedc_come_from_the_wltp_package():
-    w = drivecycle.builtin_cycle("wltc3")
+    w = cycles.builtin_cycle("wltc3")
     assert len(w.t) == 1801 and w.t[-1] == 1800.0
-    assert np.sum(w.v) / drivecycle.KMH == pytest.approx(83758.6, abs=0.05)  # wltp's checksum
+    assert np.sum(w.v) / cycles.KMH == pytest.approx(83758.6, abs=0.05)  # wltp's checksum
     assert [p[0] for p in w.phases] == ["low", "medium", "high", "extra-high"]
-    assert max(w.v) / drivecycle.KMH == pytest.approx(131.3)
-    n = drivecycle.builtin_cycle("nedc")
-    assert n.t[-1] == 1179.0 and max(n.v) / drivecycle.KMH == pytest.approx(120.0)
+    assert max(w.v) / cycles.KMH == pytest.approx(131.3)
+    n = cycles.builtin_cycle("nedc")
+    assert n.t[-1] == 1179.0 and max(n.v) / cycles.KMH == pytest.approx(120.0)
 
 
 def run_cli(argv, capsys):
@@ -137,11 +138,11 @@ def test_wltc_launch_energy_audit_closes_to_1e_6():
     energy that went into it and the heat balance to round-off. The representative part of
     the whole-cycle audit (docs/axle.md, "Energy audit": the whole cycle at the same settings
     with `hypoid drive-cycle --no-warm --set rtol=1e-8`)."""
-    cycle = drivecycle.builtin_cycle("wltc3")
-    run = drivecycle.simulate(cycle, drivecycle.ROOT / "build" / "HypoidGearPair.fmu",
-                              drivecycle.DEFAULT_VEHICLE_FMU, "fast", 293.15, 293.15, 0.05,
+    cycle = cycles.builtin_cycle("wltc3")
+    run = runner.simulate(cycle, ROOT / "build" / "HypoidGearPair.fmu",
+                              runner.DEFAULT_VEHICLE_FMU, "fast", 293.15, 293.15, 0.05,
                               {"rtol": 1e-8}, "cold", until=60.0)
-    s = drivecycle.summarise(run, cycle, 0.05)
+    s = summary.summarise(run, cycle, 0.05)
     assert s["energy_into_axle_J"] > 1e5 and np.max(run.rows["v"]) > 5.0
     assert abs(s["audit"]["heat_residual_relative"]) < 1e-9
     assert abs(s["audit"]["energy_residual_relative"]) < 1e-6
@@ -151,19 +152,19 @@ def launch_after_a_stop():
     """WLTC class 3's launch at 137 s behind a stop: drive off to 12 km/h, brake to a standstill
     at 7 s, stand 3 s with the brakes held (the pinion crawls down through 1 rpm), then the
     cycle's own 137-141 s (0 -> 11.7 km/h in 4 s) from 10 s on."""
-    w = drivecycle.builtin_cycle("wltc3")
+    w = cycles.builtin_cycle("wltc3")
     k = (w.t >= 137.0) & (w.t <= 141.0)
     t = np.concatenate([[0.0, 1.0, 4.0, 7.0], 10.0 + w.t[k] - 137.0])
-    v = np.concatenate([np.array([0.0, 0.0, 12.0, 0.0]) * drivecycle.KMH, w.v[k]])
-    return drivecycle.Cycle("launch", t, v, [("stop", 0.0, 10.0), ("launch", 10.0, 14.0)],
+    v = np.concatenate([np.array([0.0, 0.0, 12.0, 0.0]) * cycles.KMH, w.v[k]])
+    return cycles.Cycle("launch", t, v, [("stop", 0.0, 10.0), ("launch", 10.0, 14.0)],
                             "WLTC class 3b, 137-141 s, behind a stop")
 
 
-def launch_run(extra, gear_fmu=drivecycle.ROOT / "build" / "HypoidGearPair.fmu"):
+def launch_run(extra, gear_fmu=ROOT / "build" / "HypoidGearPair.fmu"):
     cycle = launch_after_a_stop()
-    run = drivecycle.simulate(cycle, gear_fmu, drivecycle.DEFAULT_VEHICLE_FMU, "full", 293.15,
+    run = runner.simulate(cycle, gear_fmu, runner.DEFAULT_VEHICLE_FMU, "full", 293.15,
                               293.15, 0.05, extra, "cold")
-    return run, drivecycle.summarise(run, cycle, 0.05)
+    return run, summary.summarise(run, cycle, 0.05)
 
 
 @pytest.fixture(scope="module")
@@ -183,7 +184,7 @@ def test_full_level_launches_from_a_standstill(launch_direct, solver):
     run, s = launch_run({"solver": solver})
     r = run.rows
     assert abs(np.interp(9.95, r["time"], r["w_p"])) < 0.1  # the pinion stood (rad/s)
-    assert r["v"][-1] / drivecycle.KMH == pytest.approx(11.7, abs=0.5)  # the cycle's 141 s
+    assert r["v"][-1] / cycles.KMH == pytest.approx(11.7, abs=0.5)  # the cycle's 141 s
     assert abs(s["audit"]["energy_residual_relative"]) < 1e-6
     mesh, mesh_direct = (x["phases"][1]["losses_J"]["mesh"] for x in (s, launch_direct[1]))
     assert mesh_direct > 100.0 and mesh == pytest.approx(mesh_direct, rel=5e-3)
@@ -224,11 +225,11 @@ def test_libcosim_and_fmpy_masters_agree_on_the_axle_loss(tmp_path, capsys):
     lc = json.loads((tmp_path / "lc" / "summary.json").read_text())
     assert lc["meta"]["master"] == "libcosim"
     (got,) = lc["runs"]
-    cycle = drivecycle.builtin_cycle("wltc3")
-    run = drivecycle.simulate(cycle, drivecycle.ROOT / "build" / "HypoidGearPair.fmu",
-                              drivecycle.DEFAULT_VEHICLE_FMU, "fast", 293.15, 293.15, 0.05, {},
+    cycle = cycles.builtin_cycle("wltc3")
+    run = runner.simulate(cycle, ROOT / "build" / "HypoidGearPair.fmu",
+                              runner.DEFAULT_VEHICLE_FMU, "fast", 293.15, 293.15, 0.05, {},
                               "cold", until=30.0)
-    ref = drivecycle.summarise(run, cycle, 0.05)
+    ref = summary.summarise(run, cycle, 0.05)
     assert run.rows["time"][-1] == pytest.approx(30.0)
     assert ref["axle_loss_J"] > 1e3  # the launch is in the segment
     assert got["axle_loss_J"] == pytest.approx(ref["axle_loss_J"], rel=LIBCOSIM_TOL)
@@ -247,10 +248,10 @@ def test_until_shorter_than_a_step_is_refused(tmp_path, capsys):
 @functools.lru_cache(maxsize=None)
 def first_100_s(level):
     """The summary of the first 100 s of WLTC class 3 from a cold start at a level."""
-    cycle, fmu = drivecycle.builtin_cycle("wltc3"), drivecycle.ROOT / "build" / "HypoidGearPair.fmu"
-    run = drivecycle.simulate(cycle, fmu, drivecycle.DEFAULT_VEHICLE_FMU, level, 293.15, 293.15,
+    cycle, fmu = cycles.builtin_cycle("wltc3"), ROOT / "build" / "HypoidGearPair.fmu"
+    run = runner.simulate(cycle, fmu, runner.DEFAULT_VEHICLE_FMU, level, 293.15, 293.15,
                               0.05, {}, level, until=100.0)
-    return drivecycle.summarise(run, cycle, 0.05)
+    return summary.summarise(run, cycle, 0.05)
 
 
 def check_axle_loss(got, ref, total, mesh, others):
@@ -280,22 +281,22 @@ def test_the_default_level_is_the_map_level_within_the_maps_range():
     lowest temperature, read here from a shipped map, else the fast level (the sump could cool
     onto the map's held edge), and the fast level for a gear set or lubricant of one's own,
     which has no built-in map."""
-    text = (drivecycle.ROOT / "resources" / "maps" / "gearset1_OS265962.txt").read_text()
+    text = (ROOT / "resources" / "maps" / "gearset1_OS265962.txt").read_text()
     line = next(x for x in text.splitlines() if x.startswith("temperatures "))
-    assert drivecycle.MAP_T_MIN == pytest.approx(min(float(x) for x in line.split("#")[0]
+    assert levels.MAP_T_MIN == pytest.approx(min(float(x) for x in line.split("#")[0]
                                                      .split()[1:]))
-    assert drivecycle.default_level(293.15, [293.15, 353.15], {}) == "map"
-    assert drivecycle.default_level(278.15, [293.15], {}) == "fast"
-    assert drivecycle.default_level(293.15, [283.15, 353.15], {}) == "fast"
-    assert drivecycle.default_level(293.15, [293.15], {"gear_set_file": "my_set.txt"}) == "fast"
-    assert drivecycle.default_level(293.15, [293.15], {"lubricant_file": "my_oil.txt"}) == "fast"
+    assert levels.default_level(293.15, [293.15, 353.15], {}) == "map"
+    assert levels.default_level(278.15, [293.15], {}) == "fast"
+    assert levels.default_level(293.15, [283.15, 353.15], {}) == "fast"
+    assert levels.default_level(293.15, [293.15], {"gear_set_file": "my_set.txt"}) == "fast"
+    assert levels.default_level(293.15, [293.15], {"lubricant_file": "my_oil.txt"}) == "fast"
 
 
 def test_every_parameter_has_a_rule_for_the_levels_it_reaches():
     """Each parameter of the gear FMU is placed: it reaches every level, or it is friction data
     (not in the built-in maps: fast and full), or it belongs to the compliant mesh (full), or it
     is one of the levels' own settings; the groups do not overlap and name real parameters."""
-    groups = [drivecycle.REACHES_EVERY_LEVEL, drivecycle.MESH_FRICTION, drivecycle.MESH_DYNAMICS,
+    groups = [levels.REACHES_EVERY_LEVEL, levels.MESH_FRICTION, levels.MESH_DYNAMICS,
               {"efficiency_map_file", "friction_model", "mesh_model"}]
     names = {v.name for v in TABLE.variables.values() if v.causality == "parameter"}
     assert sum(len(g) for g in groups) == len(set().union(*groups))
@@ -308,17 +309,17 @@ def test_a_set_parameter_moves_the_default_level_to_one_it_reaches():
     one line that says so; the axle ledger's parameters keep the map level; a map of one's own
     keeps it for friction data too."""
     hot = (293.15, [293.15, 353.15])
-    assert drivecycle.choose_level(None, *hot, {"brg_f0": 4.0, "F_pre_g": 9e3}) == ("map", None)
-    assert drivecycle.choose_level(None, *hot, {"tau_0": 2e6}) == ("map", None)  # the default
-    level, note = drivecycle.choose_level(None, *hot, {"tau_0": 3e6})
+    assert levels.choose_level(None, *hot, {"brg_f0": 4.0, "F_pre_g": 9e3}) == ("map", None)
+    assert levels.choose_level(None, *hot, {"tau_0": 2e6}) == ("map", None)  # the default
+    level, note = levels.choose_level(None, *hot, {"tau_0": 3e6})
     assert level == "fast" and "tau_0" in note and "map level" in note and "\n" not in note
-    assert drivecycle.choose_level(None, *hot, {"k_m_scale": 1.1})[0] == "full"
-    assert drivecycle.choose_level(None, *hot, {"friction_model": "coulomb"})[0] == "fast"
-    assert drivecycle.choose_level(None, *hot, {"mesh_model": "varying"})[0] == "full"
+    assert levels.choose_level(None, *hot, {"k_m_scale": 1.1})[0] == "full"
+    assert levels.choose_level(None, *hot, {"friction_model": "coulomb"})[0] == "fast"
+    assert levels.choose_level(None, *hot, {"mesh_model": "varying"})[0] == "full"
     own = {"tau_0": 3e6, "efficiency_map_file": "my_map.txt"}
-    assert drivecycle.choose_level(None, *hot, own) == ("map", None)
+    assert levels.choose_level(None, *hot, own) == ("map", None)
     # below the maps' range the default is fast already: no note
-    assert drivecycle.choose_level(None, 278.15, [278.15], {"tau_0": 3e6}) == ("fast", None)
+    assert levels.choose_level(None, 278.15, [278.15], {"tau_0": 3e6}) == ("fast", None)
 
 
 @pytest.mark.parametrize("level, name, value, words", [

@@ -273,7 +273,7 @@ def test_the_built_in_maps_refuse_the_other_tooth_data(fmu_path):
     """The built-in efficiency maps are made with the default tooth data: the map level with the
     other one is refused, naming the tooth data it runs and the file the map was made for; the
     drive cycle then picks the fast level, and hypoid effmap hashes the file the FMU reads."""
-    from hypoid.drivecycle import run as drivecycle
+    from hypoid.drivecycle import levels
     from hypoid.maps import effmap
     from hypoid.fmu.values import TABLE
     other = "paper" if TABLE.start("tooth_data") == "loaded" else "loaded"
@@ -283,12 +283,12 @@ def test_the_built_in_maps_refuse_the_other_tooth_data(fmu_path):
             gear.start({"mesh_model": "rigid", "friction_model": "map", "tooth_data": other})
     finally:
         gear.close()
-    assert drivecycle.default_level(293.15, [293.15], {}) == "map"
-    assert drivecycle.default_level(293.15, [293.15], {"tooth_data": other}) == "fast"
+    assert levels.default_level(293.15, [293.15], {}) == "map"
+    assert levels.default_level(293.15, [293.15], {"tooth_data": other}) == "fast"
     # preset = paper also sets the paper's friction, which the maps (made with the default
     # friction) do not hold: the fast level whichever the tooth data (docs/axle.md, "Which level
     # a --set reaches")
-    assert drivecycle.default_level(293.15, [293.15], {"preset": "paper"}) == "fast"
+    assert levels.default_level(293.15, [293.15], {"preset": "paper"}) == "fast"
     files = effmap.source_files(fmu_path, {"gear_set": 2, "tooth_data": "paper"})
     assert files["gear_set"].as_posix().endswith("resources/gearsets/gearset2.txt")
     files = effmap.source_files(fmu_path, {"gear_set": 2, "tooth_data": "loaded"})

@@ -1,0 +1,132 @@
+"""Drive a passenger car with the hypoid axle over a speed cycle and report what the axle costs:
+the energy at the wheels, the axle's losses by part (mesh, churning, bearings, seals) and by
+cycle phase, the mean axle efficiency and the oil temperature, from a cold start and from a warm
+axle, with the difference.
+
+The scene (docs/axle.md): the gear FMU (load_mode = torque, axle_losses = full, thermal_model =
+sump) carries the vehicle's inertia at its wheel end (I_w += m r^2 + J_wheels) and the
+half-shaft compliance (k_t2 = k_hs); the vehicle FMU (build/LongitudinalVehicle.fmu, coupling =
+2) returns the road load and the brake torque at the wheel speed; a driver (a PI speed
+controller with feed-forward of the cycle's acceleration) sets the propeller-shaft torque T_s
+and the brakes. Both FMUs run in fmpy's co-simulation master (Jacobi, communication step
+--step) or, with --master libcosim, in libcosim's fixed-step algorithm (libcosimpy; the build's
+integer-coded gear FMU). Cycles: WLTC class 3b and NEDC from the European Commission JRC's `wltp` package
+(PyPI wltp 0.1.2a0, wltp/cycles/class3.py and nedc.py), or a CSV file with the columns
+`time` (s, increasing) and `speed` (km/h), optionally `phase` (a name per row).
+
+Examples:
+  hypoid drive-cycle                              WLTC class 3, cold (20 degC) and warm (80 degC)
+  hypoid drive-cycle --cycle nedc --no-warm
+  hypoid drive-cycle --cycle my_route.csv --t-amb 5 --set gear_set=2
+  hypoid drive-cycle --level full                 the paper's full model (slow: minutes)
+  hypoid drive-cycle --set friction_preset=paper  friction data: runs the fast level (says so)
+
+A --set parameter that the default level does not reach (friction data: not in the built-in
+maps; the compliant mesh's: not in the rigid one) moves it to the cheapest level that it
+reaches, and one line says so; with --level given, such a parameter is refused (exit 2).
+
+Writes <out>/<name>/: summary.json, summary.md, cold.csv (and warm.csv), drive_cycle.png; the
+folder appears only when the run is complete."""
+
+import json
+import os
+import pathlib
+import shutil
+import tempfile
+from dataclasses import asdict
+
+from hypoid.cli import args as cliargs
+from hypoid.drivecycle import summary
+from hypoid.drivecycle.cycles import load_cycle
+from hypoid.drivecycle.levels import LEVELS, ZERO_C, choose_level
+from hypoid.drivecycle.run import DEFAULT_VEHICLE_FMU, MASTERS, simulate
+from hypoid.drivecycle.vehicle import Vehicle
+from hypoid.paths import user_path
+
+
+def _parser():
+    ap = cliargs.Parser("hypoid drive-cycle", __doc__)
+    ap.add_fmu()
+    ap.add_argument("--vehicle-fmu", type=user_path, default=str(DEFAULT_VEHICLE_FMU),
+                    help="the vehicle FMU (default: build/LongitudinalVehicle.fmu)")
+    ap.add_argument("--cycle", default="wltc3", help="wltc3 (default), nedc or a CSV file")
+    ap.add_argument("--level", choices=sorted(LEVELS),
+                    help="gear FMU fidelity: map (rigid mesh, the mesh friction from the "
+                         "efficiency map; the default when the oil and the air are at 20 degC or "
+                         "warmer, the map's range), fast (the same with the friction model "
+                         "itself, ~4x dearer; the default below 20 degC) or full (the paper's "
+                         "model)")
+    ap.add_argument("--step", type=float, default=0.05,
+                    help="communication step of the co-simulation in s (0.05)")
+    ap.add_argument("--t-amb", type=float, default=20.0, help="air temperature in degC (20)")
+    ap.add_argument("--t-oil0", type=float, help="oil at the start in degC (default: --t-amb)")
+    ap.add_argument("--warm", type=float, default=80.0,
+                    help="oil at the start of the warm run in degC (80)")
+    ap.add_argument("--no-warm", action="store_true", help="only the cold start")
+    ap.add_argument("--master", choices=sorted(MASTERS), default="fmpy",
+                    help="co-simulation master: fmpy (default) or libcosim (libcosimpy, with "
+                         "the build's integer-coded gear FMU)")
+    ap.add_argument("--until", type=float,
+                    help="stop after this many seconds of the cycle (default: the whole cycle)")
+    ap.add_argument("--out", type=user_path, default=user_path("results"),
+                    help="parent folder of the run's folder (default: ./results)")
+    ap.add_argument("--name", help="the run's folder name (default: drive_cycle_<cycle>)")
+    ap.add_set()
+    return ap
+
+
+def check_args(args):
+    if not 1e-3 <= args.step <= 1.0:
+        raise cliargs.UsageError(f"--step {args.step}: between 0.001 and 1 s")
+    if args.until is not None and not args.until >= args.step:
+        raise cliargs.UsageError(f"--until {args.until}: at least one step ({args.step} s)")
+    for name in ("t_amb", "t_oil0", "warm"):
+        value = getattr(args, name)
+        if value is not None and not -70.0 <= value <= 170.0:
+            raise cliargs.UsageError(f"--{name.replace('_', '-')} {value}: a temperature "
+                                     "between -70 and 170 degC")
+
+
+def main(argv):
+    args = _parser().parse_args(argv)
+    check_args(args)
+    extra = cliargs.parse_set(args.set)
+    cycle = load_cycle(args.cycle)
+    gear_fmu, vehicle_fmu = cliargs.fmu_path(args.fmu), cliargs.fmu_path(args.vehicle_fmu)
+    T_amb = args.t_amb + ZERO_C
+    starts = [("cold", (args.t_oil0 if args.t_oil0 is not None else args.t_amb) + ZERO_C)]
+    if not args.no_warm:
+        starts.append(("warm", args.warm + ZERO_C))
+    level, note = choose_level(args.level, T_amb, [T0 for _, T0 in starts], extra)
+    if note:
+        print(f"hypoid drive-cycle: {note}", flush=True)
+    runs = [simulate(cycle, gear_fmu, vehicle_fmu, level, T0, T_amb, args.step, extra,
+                     label, master=args.master, until=args.until) for label, T0 in starts]
+    summaries = [summary.summarise(run, cycle, args.step) for run in runs]
+    diff = summary.difference(summaries[0], summaries[1]) if len(summaries) == 2 else None
+    meta = {"cycle": cycle.name, "source": cycle.source, "level": level, "level_note": note,
+            "gear_fmu_settings": LEVELS[level], "step_s": args.step,
+            "master": args.master, "until_s": args.until,
+            "T_amb_degC": args.t_amb, "set": extra, "vehicle": asdict(Vehicle())}
+    text = summary.markdown(meta, summaries, diff)
+    name = args.name or f"drive_cycle_{cycle.name}"
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    final = out / name
+    if final.exists():
+        raise cliargs.UsageError(f"{final} exists: give another --name or remove it")
+    tmp = pathlib.Path(tempfile.mkdtemp(dir=out, prefix=f".{name}."))
+    try:
+        (tmp / "summary.json").write_text(json.dumps(
+            {"meta": meta, "runs": summaries, "warm_minus_cold": diff}, indent=2) + "\n")
+        (tmp / "summary.md").write_text(text)
+        for run in runs:
+            summary.write_csv(run, tmp / f"{run.label}.csv")
+        summary.plot(cycle, runs, tmp / "drive_cycle.png")
+        os.replace(tmp, final)
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+    print(text, end="")
+    print(f"hypoid drive-cycle: wrote {final}/ (summary.json, summary.md, "
+          + ", ".join(f"{r.label}.csv" for r in runs) + ", drive_cycle.png)")
+    return 0

@@ -1,0 +1,102 @@
+"""The gear FMU and a vehicle FMU in one fixed-step co-simulation master (fmpy, through
+hypoid.fmu.instance.Instance): the master of the drive-cycle runner and of the co-simulation
+tests (docs/cosimulation.md, docs/axle.md).
+
+The coupling is the rear axle's: the vehicle's half-shaft torque T_hs goes to the gear's wheel-end
+load T_w, the gear's wheel-flange speed w_w to the vehicle's w_w. Other inputs (the propeller-shaft
+torque T_s, the brakes, the air speed) come from the caller at each step. Per step, Jacobi (as
+libcosim's fixed_step_algorithm): both FMUs step over [t, t + h] with the inputs of t; Gauss-Seidel:
+the gear steps first and the vehicle steps with the gear's new w_w.
+
+Initialisation: both FMUs set up and given their start values; with `init_passes` > 0 the
+coupled inputs go around the loop that many times in initialisation mode (libcosim's way: one
+pass per FMU), else each FMU initialises on its start values alone."""
+
+from hypoid.fmu.instance import Instance
+
+ALGORITHMS = ("jacobi", "gauss-seidel")
+
+
+def _start(inst, values, name):
+    """An input's value at the start: given, or the variable's start value."""
+    return float(values.get(name, inst.table.variable(name).start))
+
+
+class GearVehicle:
+    """Two instances, `gear` and `vehicle`; step() returns the outputs (gear_out, vehicle_out) as
+    lists of floats in the order given. A wheel speed below `w_rest` (rad/s) reaches the vehicle as
+    0, so that a standing car's brakes and rolling resistance hold it with a constant torque
+    instead of one the gear integrator's noise makes (docs/axle.md)."""
+
+    def __init__(self, gear_fmu, vehicle_fmu, gear_start, vehicle_start, gear_out, vehicle_out,
+                 gear_inputs=("T_s",), vehicle_inputs=(), algorithm="jacobi", init_passes=0,
+                 w_rest=0.0):
+        if algorithm not in ALGORITHMS:
+            raise ValueError(f"algorithm {algorithm!r}: one of {', '.join(ALGORITHMS)}")
+        self.algorithm, self.w_rest = algorithm, w_rest
+        self.gear = Instance(gear_fmu, name="gear")
+        self.vehicle = Instance(vehicle_fmu, name="vehicle")
+        self.g_out, self.v_out = self.gear.refs(gear_out), self.vehicle.refs(vehicle_out)
+        self.gear_inputs, self.vehicle_inputs = list(gear_inputs), list(vehicle_inputs)
+        self.g_in = self.gear.refs([*gear_inputs, "T_w"])
+        self.v_in = self.vehicle.refs(["w_w", *vehicle_inputs])
+        self.i_ww, self.i_ths = list(gear_out).index("w_w"), list(vehicle_out).index("T_hs")
+        self._initialize(gear_start, vehicle_start, init_passes)
+
+    def _initialize(self, gear_start, vehicle_start, passes):
+        for inst, values in ((self.gear, gear_start), (self.vehicle, vehicle_start)):
+            inst.setup()
+            inst.set_many(values)
+        for inst in (self.gear, self.vehicle):
+            inst.enter_initialization()
+        if passes:
+            g_ext = [_start(self.gear, gear_start, n) for n in self.gear_inputs]
+            v_ext = [_start(self.vehicle, vehicle_start, n) for n in self.vehicle_inputs]
+            T_w, w_w = _start(self.gear, gear_start, "T_w"), _start(self.vehicle, vehicle_start,
+                                                                    "w_w")
+            for _ in range(passes):
+                self._set_inputs(g_ext, T_w, v_ext, w_w)
+                g, v = self._read()
+                T_w, w_w = v[self.i_ths], g[self.i_ww]
+            self._set_inputs(g_ext, T_w, v_ext, w_w)
+        for inst in (self.gear, self.vehicle):
+            inst.exit_initialization()
+        self.outputs = self._read()
+
+    def _set_inputs(self, gear_inputs, T_w, vehicle_inputs, w_w):
+        self.gear.set_reals(self.g_in, [*gear_inputs, T_w])
+        self.vehicle.set_reals(self.v_in, [self._to_vehicle(w_w), *vehicle_inputs])
+
+    def _to_vehicle(self, w_w):
+        return w_w if abs(w_w) >= self.w_rest else 0.0
+
+    def _read(self):
+        return self.gear.get_reals(self.g_out), self.vehicle.get_reals(self.v_out)
+
+    def step(self, t, h, gear_inputs=(), vehicle_inputs=()):
+        """One communication step over [t, t + h] with the callers' inputs (in the order of
+        gear_inputs and vehicle_inputs); the outputs at t + h."""
+        g, v = self.outputs
+        if self.algorithm == "jacobi":
+            self._set_inputs(gear_inputs, v[self.i_ths], vehicle_inputs, g[self.i_ww])
+            self.gear.do_step(t, h)
+            self.vehicle.do_step(t, h)
+            self.outputs = self._read()
+            return self.outputs
+        self.gear.set_reals(self.g_in, [*gear_inputs, v[self.i_ths]])
+        self.gear.do_step(t, h)
+        g = self.gear.get_reals(self.g_out)
+        self.vehicle.set_reals(self.v_in, [self._to_vehicle(g[self.i_ww]), *vehicle_inputs])
+        self.vehicle.do_step(t, h)
+        self.outputs = g, self.vehicle.get_reals(self.v_out)
+        return self.outputs
+
+    def close(self):
+        self.gear.close()
+        self.vehicle.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
