@@ -54,8 +54,9 @@ def main(argv=None):
             return stop.code or 0
         print(f"{prog}: {stop.code}", file=sys.stderr)
         return 2
-    except KeyboardInterrupt:
-        print(f"{prog}: interrupted", file=sys.stderr)
+    except KeyboardInterrupt as stop:  # Ctrl-C, or SIGTERM (hypoid.fmu.parallel.Terminated)
+        print(f"{prog}: interrupted{' by SIGTERM' if str(stop) == 'SIGTERM' else ''}; "
+              "the worker processes are ended", file=sys.stderr)
         return 2
     except Exception as e:  # noqa: BLE001 - the one error path of all tools
         if os.environ.get("HYPOID_TRACEBACK"):

@@ -6,6 +6,7 @@ and exits with status 2, never with a traceback."""
 
 import argparse
 import pathlib
+import re
 
 import numpy as np
 
@@ -21,6 +22,8 @@ SET_HELP = ("start values by name, e.g. T_s=200 gear_set=2 friction_model=ehl_is
 VARY_HELP = ("values of one variable: start:stop:step (inclusive) or v1,v2,...; repeat for a "
              "product grid, e.g. --vary speed_rpm=1000:5000:250 --vary T_s=50,100")
 
+NEGATIVE_VALUE = re.compile(r"^-\.?\d[\d.,:eE+\-]*$")
+
 
 class Parser(argparse.ArgumentParser):
     """argparse with the whole module docstring as help (its first paragraph as the description,
@@ -33,6 +36,9 @@ class Parser(argparse.ArgumentParser):
             kwargs.update(description=first, epilog=rest.strip("\n").rstrip() or None)
         kwargs.setdefault("formatter_class", argparse.RawDescriptionHelpFormatter)
         super().__init__(prog=prog, **kwargs)
+        # a value that starts with a minus and a digit is a value, not an option: negative
+        # numbers, lists and ranges of them (--temperatures-c -10,20, --torques -50:50:25)
+        self._negative_number_matcher = NEGATIVE_VALUE
 
     def error(self, message):
         raise UsageError(f"{message} (see {self.prog} --help)")

@@ -14,6 +14,7 @@ import contextlib
 import hashlib
 import os
 import pathlib
+import signal
 import sys
 import threading
 import time
@@ -91,8 +92,32 @@ def guarded(sha, data, fn, *args):
 
 # ---------------------------------------------------------------------------- client side
 def _forget_parent_instances():
-    """A forked worker starts without the instances of the process it was forked from."""
+    """A forked worker starts without the instances of the process it was forked from, and leaves
+    SIGINT to its parent (a Ctrl-C reaches the whole process group): the parent ends it."""
     _INSTANCES.clear()
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+
+
+class Terminated(KeyboardInterrupt):
+    """SIGTERM, raised in the main thread like a Ctrl-C so that the same clean-up runs."""
+
+
+@contextlib.contextmanager
+def sigterm_as_interrupt():
+    """SIGTERM raises Terminated in the main thread while the block runs (elsewhere: as is)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def handler(signum, frame):
+        raise Terminated("SIGTERM")
+
+    before = signal.signal(signal.SIGTERM, handler)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, before)
 
 
 class LocalPool:
@@ -122,16 +147,31 @@ class LocalPool:
     def close(self):
         self.pool.shutdown(wait=True, cancel_futures=True)
 
+    def abort(self):
+        """Ends the workers now, also those in the middle of a task (a point may take minutes)."""
+        processes = list((self.pool._processes or {}).values())
+        self.pool.shutdown(wait=False, cancel_futures=True)
+        for p in processes:
+            with contextlib.suppress(Exception):
+                p.terminate()
+        for p in processes:
+            with contextlib.suppress(Exception):
+                p.join(5.0)
+
 
 def call_all(calls, workers=2):
     """[fn()] of argument-free picklable callables, on `workers` local processes (0: here)."""
     if workers == 0:
         return [fn() for fn in calls]
-    pool = LocalPool(workers)
-    try:
-        return list(pool.pool.map(_call, calls))
-    finally:
+    with sigterm_as_interrupt():
+        pool = LocalPool(workers)
+        try:
+            out = list(pool.pool.map(_call, calls))
+        except BaseException:
+            pool.abort()
+            raise
         pool.close()
+        return out
 
 
 def _call(fn):
@@ -146,10 +186,13 @@ def executor(scheduler=None, workers=2):
         yield None
         return
     if scheduler is None:
-        pool = LocalPool(workers)
-        try:
-            yield pool
-        finally:
+        with sigterm_as_interrupt():
+            pool = LocalPool(workers)
+            try:
+                yield pool
+            except BaseException:
+                pool.abort()  # an interrupt, SIGTERM or error: no worker outlives the run
+                raise
             pool.close()
         return
     from dask.distributed import Client

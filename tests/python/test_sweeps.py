@@ -6,6 +6,11 @@ import copy
 import functools
 import math
 import os
+import pathlib
+import signal
+import subprocess
+import sys
+import time
 
 import numpy as np
 import pandas as pd
@@ -209,3 +214,53 @@ def test_swapped_alpha_lubricant_file(tmp_path):
     builtin = lubricant.render(lubricant.build(name="OS265963", **lubricant.BUILTIN["OS265963"]),
                                lubricant.BUILTIN_NOTES["OS265963"])
     assert builtin == (sweep.pathlib.Path(lubricant.builtin_dir()) / "OS265963.txt").read_text()
+
+
+# ---------------------------------------------------------------------------- ending a sweep
+def _children(pid):
+    """The ids of the live processes whose parent is `pid` (from /proc)."""
+    out = []
+    for stat in pathlib.Path("/proc").glob("[0-9]*/stat"):
+        try:
+            fields = stat.read_text().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        if int(fields[1]) == pid and fields[0] != "Z":
+            out.append(int(stat.parent.name))
+    return out
+
+
+@pytest.mark.skipif(not pathlib.Path("/proc/self/stat").exists(), reason="reads /proc")
+@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGINT])
+def test_a_signal_ends_the_sweep_and_its_workers(tmp_path, fmu_path, signum):
+    """Before, SIGTERM killed the parent alone and left both workers running their points."""
+    cmd = [sys.executable, "-c", "import sys; from hypoid import cli; sys.exit(cli.main())", "sweep", "--fmu", str(fmu_path),
+           "--out", str(tmp_path / "s"), "--workers", "2", "--window-cycles", "100000",
+           "--max-settle-time", "1e4", "--set", "T_s=100", "--vary", "speed_rpm=2000,3000,4000"]
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 30
+    while len(_children(proc.pid)) < 2 and time.monotonic() < deadline and proc.poll() is None:
+        time.sleep(0.2)
+    workers = _children(proc.pid)
+    assert len(workers) >= 2, "the sweep did not start its workers"
+    time.sleep(1.0)  # the workers are inside their first point
+    proc.send_signal(signum)
+    _, err = proc.communicate(timeout=30)
+    assert proc.returncode == 2
+    assert "interrupted" in err and "Traceback" not in err, err
+    time.sleep(0.2)
+    alive = [w for w in workers if pathlib.Path(f"/proc/{w}").exists()
+             and "Z" not in pathlib.Path(f"/proc/{w}/stat").read_text().rsplit(")", 1)[1][:3]]
+    assert not alive, f"workers {alive} outlived the sweep"
+
+
+def test_negative_numbers_in_list_options_are_values():
+    """Before, `--temperatures-c -10,20` was read as an unknown option."""
+    from hypoid.maps import effmap
+
+    args = effmap._parser().parse_args(["--out", "m.txt", "--temperatures-c", "-10,20",
+                                        "--torques", "-50:50:50"])
+    assert cliargs.numbers("--temperatures-c", args.temperatures_c) == [-10, 20]
+    assert cliargs.numbers("--torques", args.torques) == [-50, 0, 50]
+    with pytest.raises(cliargs.UsageError, match="unrecognized arguments: -x"):
+        effmap._parser().parse_args(["--out", "m.txt", "-x"])
