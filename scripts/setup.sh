@@ -4,7 +4,8 @@
 #        binary mingw-w64 and wine64 (scripts/win64.sh);
 #   .venv: the hypoid package with its pinned dependencies;
 #   build/third_party/: the Debian source packages of musl and SUNDIALS (scripts/third_party.sh),
-#        and SUNDIALS built from it with optimisation for linux64 (scripts/sundials.sh).
+#        and SUNDIALS built from it with optimisation for linux64 (scripts/sundials.sh); the FMI
+#        2.0 and 3.0 headers from PyPI (scripts/fmi_headers.sh, which CMake runs).
 # Idempotent: each part is skipped when already present.
 set -euo pipefail
 cd "$(dirname "$0")/.."

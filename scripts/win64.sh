@@ -49,7 +49,7 @@ sundials_win64() {
 }
 
 fmi_include() {
-  .venv/bin/python -c "import fmpy, os; print(os.path.join(os.path.dirname(fmpy.__file__), 'c-code'))"
+  echo "$(scripts/fmi_headers.sh)/fmi2"
 }
 
 build() {
