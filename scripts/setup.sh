@@ -26,6 +26,10 @@ if [ ! -x .venv/bin/python ] || ! .venv/bin/python -c 'import hypoid, fmpy, pyte
   .venv/bin/pip install -q -e ".[test]"
   touch .venv/.installed
 fi
+# hypoid drive-cycle's UDDS, HWFET, US06 and FTP-75 are the cycle files of NREL's FASTSim package;
+# installed without its dependencies (it pins an older numpy): only its files are read.
+.venv/bin/python -c 'import importlib.util as u, sys; sys.exit(u.find_spec("fastsim") is None)' \
+  || .venv/bin/pip install -q --no-deps fastsim==2.1.5
 
 # Third-party sources from Debian (cached in build/third_party/): musl's portable math for the
 # FMU binaries, SUNDIALS for the win64 one; then the win64 DLL (skipped with a message where the

@@ -10,14 +10,24 @@ half-shaft compliance (k_t2 = k_hs); the vehicle FMU (build/LongitudinalVehicle.
 controller with feed-forward of the cycle's acceleration) sets the propeller-shaft torque T_s
 and the brakes. Both FMUs run in fmpy's co-simulation master (Jacobi, communication step
 --step) or, with --master libcosim, in libcosim's fixed-step algorithm (libcosimpy; the build's
-integer-coded gear FMU). Cycles: WLTC class 3b and NEDC from the European Commission JRC's `wltp` package
-(PyPI wltp 0.1.2a0, wltp/cycles/class3.py and nedc.py), or a CSV file with the columns
-`time` (s, increasing) and `speed` (km/h), optionally `phase` (a name per row).
+integer-coded gear FMU). The car is the vehicle FMU's by name: --set m=1800 CdA=0.68 (any of its
+parameters; the rest of --set goes to the gear FMU, e.g. the driveline inertias I_s=0.08) or a
+vehicle file (--vehicle my_car.toml: the vehicle's parameters, the driveline's inertias, the
+engine's drag map for engine braking, the air pressure; hypoid/drivecycle/vehicle.py describes
+it); the air density follows the air temperature (--t-amb) unless rho_air is given.
+
+Cycles: wltc1, wltc2, wltc3a, wltc3 (= wltc3b) and nedc from the European Commission JRC's
+`wltp` package (PyPI wltp 0.1.2a0, wltp/cycles/); udds, hwfet, us06 and ftp75 from the cycle
+files of NREL's FASTSim package (PyPI fastsim 2.1.5, fastsim/resources/cycles/); or a CSV file
+with the columns `time` (s, increasing) and `speed` (km/h), optionally `grade` (%, uphill
+positive, within +-30 %) and `phase` (a name per row), separated by ',' or by ';' with decimal
+commas. A progress bar runs on stderr when it is a terminal.
 
 Examples:
   hypoid drive-cycle                              WLTC class 3, cold (20 degC) and warm (80 degC)
   hypoid drive-cycle --cycle nedc --no-warm
   hypoid drive-cycle --cycle my_route.csv --t-amb 5 --set gear_set=2
+  hypoid drive-cycle --cycle ftp75 --vehicle my_car.toml --set m=1800 --t-amb -7
   hypoid drive-cycle --level full                 the paper's full model (slow: minutes)
   hypoid drive-cycle --set friction_preset=paper  friction data: runs the fast level (says so)
 
@@ -33,14 +43,13 @@ import os
 import pathlib
 import shutil
 import tempfile
-from dataclasses import asdict
 
 from hypoid.cli import args as cliargs
 from hypoid.drivecycle import summary
 from hypoid.drivecycle.cycles import load_cycle
 from hypoid.drivecycle.levels import LEVELS, ZERO_C, choose_level
 from hypoid.drivecycle.run import DEFAULT_VEHICLE_FMU, MASTERS, simulate
-from hypoid.drivecycle.vehicle import Vehicle
+from hypoid.drivecycle.vehicle import Vehicle, fmu_parameters, read_vehicle_file, split_set
 from hypoid.paths import user_path
 
 
@@ -49,7 +58,11 @@ def _parser():
     ap.add_fmu()
     ap.add_argument("--vehicle-fmu", type=user_path, default=str(DEFAULT_VEHICLE_FMU),
                     help="the vehicle FMU (default: build/LongitudinalVehicle.fmu)")
-    ap.add_argument("--cycle", default="wltc3", help="wltc3 (default), nedc or a CSV file")
+    ap.add_argument("--cycle", default="wltc3",
+                    help="wltc3 (default), wltc1, wltc2, wltc3a, nedc, udds, hwfet, us06, ftp75 "
+                         "or a CSV file")
+    ap.add_argument("--vehicle", type=user_path,
+                    help="a vehicle file (TOML): the car, driveline inertias, engine drag map")
     ap.add_argument("--level", choices=sorted(LEVELS),
                     help="gear FMU fidelity: map (rigid mesh, the mesh friction from the "
                          "efficiency map; the default when the oil and the air are at 20 degC or "
@@ -90,9 +103,16 @@ def check_args(args):
 def main(argv):
     args = _parser().parse_args(argv)
     check_args(args)
-    extra = cliargs.parse_set(args.set)
-    cycle = load_cycle(args.cycle)
     gear_fmu, vehicle_fmu = cliargs.fmu_path(args.fmu), cliargs.fmu_path(args.vehicle_fmu)
+    known = fmu_parameters(vehicle_fmu)
+    car = read_vehicle_file(args.vehicle, known) if args.vehicle else Vehicle()
+    car_set, gear_set = split_set(args.set, known)
+    car.fmu.update(car_set)
+    extra = cliargs.parse_set(gear_set)
+    cycle = load_cycle(args.cycle)
+    if args.master != "fmpy" and (cycle.grade is not None or car.fmu.get("grade", 0.0)):
+        raise cliargs.UsageError(f"--master {args.master}: a grade needs the fmpy master (it adds "
+                                 "the grade's load at the wheel); leave --master out")
     T_amb = args.t_amb + ZERO_C
     starts = [("cold", (args.t_oil0 if args.t_oil0 is not None else args.t_amb) + ZERO_C)]
     if not args.no_warm:
@@ -101,13 +121,15 @@ def main(argv):
     if note:
         print(f"hypoid drive-cycle: {note}", flush=True)
     runs = [simulate(cycle, gear_fmu, vehicle_fmu, level, T0, T_amb, args.step, extra,
-                     label, master=args.master, until=args.until) for label, T0 in starts]
+                     label, vehicle=car, master=args.master, until=args.until)
+            for label, T0 in starts]
     summaries = [summary.summarise(run, cycle, args.step) for run in runs]
     diff = summary.difference(summaries[0], summaries[1]) if len(summaries) == 2 else None
     meta = {"cycle": cycle.name, "source": cycle.source, "level": level, "level_note": note,
             "gear_fmu_settings": LEVELS[level], "step_s": args.step,
             "master": args.master, "until_s": args.until,
-            "T_amb_degC": args.t_amb, "set": extra, "vehicle": asdict(Vehicle())}
+            "T_amb_degC": args.t_amb, "set": extra, "vehicle": runs[0].vehicle.record(),
+            "driveline": runs[0].driveline, "vehicle_file": str(args.vehicle or "")}
     text = summary.markdown(meta, summaries, diff)
     name = args.name or f"drive_cycle_{cycle.name}"
     out = pathlib.Path(args.out)

@@ -73,17 +73,19 @@ class GearVehicle:
     def _read(self):
         return self.gear.get_reals(self.g_out), self.vehicle.get_reals(self.v_out)
 
-    def step(self, t, h, gear_inputs=(), vehicle_inputs=()):
+    def step(self, t, h, gear_inputs=(), vehicle_inputs=(), T_w_add=0.0):
         """One communication step over [t, t + h] with the callers' inputs (in the order of
-        gear_inputs and vehicle_inputs); the outputs at t + h."""
+        gear_inputs and vehicle_inputs); the outputs at t + h. T_w_add (N m) is added to the
+        vehicle's T_hs on its way to the gear's T_w: a load the caller models (a route's grade)."""
         g, v = self.outputs
         if self.algorithm == "jacobi":
-            self._set_inputs(gear_inputs, v[self.i_ths], vehicle_inputs, g[self.i_ww])
+            self._set_inputs(gear_inputs, v[self.i_ths] + T_w_add, vehicle_inputs,
+                             g[self.i_ww])
             self.gear.do_step(t, h)
             self.vehicle.do_step(t, h)
             self.outputs = self._read()
             return self.outputs
-        self.gear.set_reals(self.g_in, [*gear_inputs, v[self.i_ths]])
+        self.gear.set_reals(self.g_in, [*gear_inputs, v[self.i_ths] + T_w_add])
         self.gear.do_step(t, h)
         g = self.gear.get_reals(self.g_out)
         self.vehicle.set_reals(self.v_in, [self._to_vehicle(g[self.i_ww]), *vehicle_inputs])

@@ -1,17 +1,30 @@
-"""Speed cycles: WLTC class 3b and NEDC from the European Commission JRC's `wltp` package (PyPI
-wltp 0.1.2a0, wltp/cycles/class3.py and nedc.py), or a CSV file with the columns `time` (s,
-increasing) and `speed` (km/h), optionally `phase` (a name per row)."""
+"""Speed cycles, each with its source:
+- WLTC classes 1, 2, 3a, 3b and NEDC from the European Commission JRC's `wltp` package (PyPI wltp
+  0.1.2a0, wltp/cycles/class1.py, class2.py, class3.py, nedc.py);
+- UDDS, HWFET and US06 from the cycle files of NREL's FASTSim package (PyPI fastsim 2.1.5,
+  fastsim/resources/cycles/udds.csv, hwfet.csv, us06.csv; installed by scripts/setup.sh without
+  its dependencies, only its files are read); FTP-75 is the UDDS, the 600 s soak with the car
+  standing, and the UDDS's first 505 s again (40 CFR 86, the three phases of the FTP);
+- a CSV file with the columns `time` (s, increasing) and `speed` (km/h), optionally `grade` (%,
+  uphill positive, within +-30 %) and `phase` (a name per row); cells separated by ',' or, with
+  decimal commas, by ';' (as spreadsheets export in such locales)."""
 
+import importlib.util
 import math
 import pathlib
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
+from hypoid import csvtext
 from hypoid.errors import UsageError
 from hypoid.paths import user_path
 
 KMH = 1 / 3.6
+GRADE_MAX_PCT = 30.0
+WLTP = "wltp 0.1.2a0 (European Commission JRC)"
+FASTSIM = "fastsim 2.1.5 (NREL FASTSim), fastsim/resources/cycles/"
+FTP_SOAK_S, FTP_BAG1_S = 600.0, 505.0
 
 
 @dataclass
@@ -21,40 +34,93 @@ class Cycle:
     v: np.ndarray        # m/s
     phases: list         # [(name, t_start, t_end)]
     source: str
+    grade: np.ndarray = field(default=None)  # rise over run at each t (None: level road)
 
     def speed(self, t):
         return float(np.interp(t, self.t, self.v))
 
+    def slope(self, t):
+        """The road's grade (rise / run) at t; 0 on a level route."""
+        return 0.0 if self.grade is None else float(np.interp(t, self.t, self.grade))
 
-WLTC3_PHASES = ("low", "medium", "high", "extra-high")
+
+# name -> (wltp module, function, phase names)
+WLTP_CYCLES = {
+    "wltc1": ("class1", "class_data", ("low", "medium")),
+    "wltc2": ("class2", "class_data", ("low", "medium", "high", "extra-high")),
+    "wltc3a": ("class3", "class_data_a", ("low", "medium", "high", "extra-high")),
+    "wltc3": ("class3", "class_data_b", ("low", "medium", "high", "extra-high")),
+    "nedc": ("nedc", "cycle_data", ("ECE (urban)", "EUDC (extra-urban)")),
+}
+ALIASES = {"wltc3b": "wltc3"}
+FASTSIM_CYCLES = ("udds", "hwfet", "us06", "ftp75")
+BUILTIN = tuple(WLTP_CYCLES) + ("wltc3b",) + FASTSIM_CYCLES
+
+
+def _closed(names, parts, t_last):
+    """Phases from [first, last] seconds, each closed up to the next one's start."""
+    phases = [(n, float(a)) for n, (a, _) in zip(names, parts)]
+    return [(n, a, phases[k + 1][1] if k + 1 < len(phases) else float(t_last))
+            for k, (n, a) in enumerate(phases)]
+
+
+def wltp_cycle(name):
+    module, fn, names = WLTP_CYCLES[name]
+    try:
+        data = getattr(importlib.import_module(f"wltp.cycles.{module}"), fn)()
+    except ImportError as e:
+        raise UsageError(f"--cycle {name}: the wltp package is missing ({e}); "
+                         "install the project with scripts/setup.sh") from None
+    v = np.asarray(data["cycle"], float) * KMH
+    t = np.arange(len(v), dtype=float)
+    label = "NEDC" if name == "nedc" else f"WLTC class {name[4:]}{'b' if name == 'wltc3' else ''}"
+    return Cycle(name, t, v, _closed(names, data["parts"], t[-1]),
+                 f"{label}, {WLTP}, wltp/cycles/{module}.py")
+
+
+def fastsim_file(stem):
+    """(t s, v m/s) of one of FASTSim's cycle files (columns cycSecs, cycMps, ...)."""
+    spec = importlib.util.find_spec("fastsim")
+    if spec is None or not spec.submodule_search_locations:
+        raise UsageError(f"--cycle: the {stem.upper()} cycle is read from the fastsim "
+                         "package's files, which is missing; run scripts/setup.sh")
+    path = pathlib.Path(list(spec.submodule_search_locations)[0]) / "resources" / "cycles" \
+        / f"{stem}.csv"
+    data = np.loadtxt(path, delimiter=",", skiprows=1, usecols=(0, 1))
+    return data[:, 0], data[:, 1]
+
+
+def fastsim_cycle(name):
+    if name != "ftp75":
+        t, v = fastsim_file(name)
+        phases = ([("bag 1", 0.0, FTP_BAG1_S), ("bag 2", FTP_BAG1_S, float(t[-1]))]
+                  if name == "udds" else [("all", 0.0, float(t[-1]))])
+        return Cycle(name, t, v, phases, f"{name.upper()}, {FASTSIM}{name}.csv")
+    t_u, v_u = fastsim_file("udds")
+    n_soak, n_bag1 = int(FTP_SOAK_S), int(FTP_BAG1_S)
+    v = np.concatenate([v_u, np.zeros(n_soak), v_u[1:n_bag1 + 1]])
+    t = np.arange(len(v), dtype=float)
+    end_udds = float(t_u[-1])
+    phases = [("cold transient", 0.0, FTP_BAG1_S), ("stabilized", FTP_BAG1_S, end_udds),
+              ("soak", end_udds, end_udds + FTP_SOAK_S),
+              ("hot transient", end_udds + FTP_SOAK_S, float(t[-1]))]
+    return Cycle(name, t, v, phases, f"FTP-75: {FASTSIM}udds.csv, the UDDS, a {n_soak} s soak "
+                 f"standing and the UDDS's first {n_bag1} s")
 
 
 def builtin_cycle(name):
-    """WLTC class 3b or NEDC from the `wltp` package (speeds in km/h at 1 Hz)."""
-    try:
-        from wltp.cycles import class3, nedc
-    except ImportError as e:
-        raise UsageError(f"--cycle {name}: the wltp package is missing ({e}); "
-                                 "install the project with scripts/setup.sh") from None
-    if name == "wltc3":
-        data, names = class3.class_data_b(), WLTC3_PHASES
-        source = "WLTC class 3b, wltp 0.1.2a0 (European Commission JRC), wltp/cycles/class3.py"
-    else:
-        data, names = nedc.cycle_data(), ("ECE (urban)", "EUDC (extra-urban)")
-        source = "NEDC, wltp 0.1.2a0 (European Commission JRC), wltp/cycles/nedc.py"
-    v = np.asarray(data["cycle"], float) * KMH
-    t = np.arange(len(v), dtype=float)
-    phases = [(n, float(a), float(b)) for n, (a, b) in zip(names, data["parts"])]
-    # the parts are [first, last] second: close the gaps between them
-    phases = [(n, a, phases[k + 1][1] if k + 1 < len(phases) else t[-1])
-              for k, (n, a, _) in enumerate(phases)]
-    return Cycle(name, t, v, phases, source)
+    name = ALIASES.get(name, name)
+    return wltp_cycle(name) if name in WLTP_CYCLES else fastsim_cycle(name)
+
+
+def _fail(p, line, text):
+    raise UsageError(f"--cycle {p}: line {line}: {text}")
 
 
 def read_csv_cycle(path):
     """A user's cycle: columns time [s] (strictly increasing, from >= 0) and speed [km/h]
-    (finite, >= 0), optionally phase. Every problem is one UsageError naming file, line and
-    value."""
+    (finite, >= 0), optionally grade [%] and phase. Every problem is one UsageError naming file,
+    line and value."""
     p = pathlib.Path(path)
     try:
         lines = p.read_text().splitlines()
@@ -64,37 +130,45 @@ def read_csv_cycle(path):
             not line.lstrip().startswith("#")]
     if not rows:
         raise UsageError(f"--cycle {p}: the file is empty")
-    header = [h.strip().lower() for h in rows[0][1].split(",")]
+    sep = csvtext.delimiter(lines)
+    header = [h.strip().lower() for h in rows[0][1].split(sep)]
     missing = [c for c in ("time", "speed") if c not in header]
-    if missing:
-        raise UsageError(f"--cycle {p}: line {rows[0][0]}: missing column(s) "
-                                 f"{', '.join(missing)}; the header must name time (s) and "
-                                 f"speed (km/h), optionally phase (found: {', '.join(header)})")
-    it, iv = header.index("time"), header.index("speed")
-    ip = header.index("phase") if "phase" in header else None
-    t, v, ph = [], [], []
+    unknown = [c for c in header if c not in ("time", "speed", "grade", "phase")]
+    if missing or unknown:
+        _fail(p, rows[0][0], f"{'missing column(s) ' + ', '.join(missing) if missing else ''}"
+              f"{'; ' if missing and unknown else ''}"
+              f"{'unknown column(s) ' + ', '.join(unknown) if unknown else ''}; the header names "
+              f"time (s) and speed (km/h), optionally grade (%) and phase (found: "
+              f"{', '.join(header)})")
+    col = {c: header.index(c) if c in header else None for c in ("time", "speed", "grade",
+                                                                "phase")}
+    t, v, g, ph = [], [], [], []
     for n, line in rows[1:]:
-        cells = [c.strip() for c in line.split(",")]
+        cells = [c.strip() for c in line.split(sep)]
         if len(cells) != len(header):
-            raise UsageError(f"--cycle {p}: line {n}: {len(cells)} values for "
-                                     f"{len(header)} columns")
-        try:
-            tt, vv = float(cells[it]), float(cells[iv])
-        except ValueError:
-            raise UsageError(f"--cycle {p}: line {n}: time {cells[it]!r} or speed "
-                                     f"{cells[iv]!r} is not a number") from None
-        if not (math.isfinite(tt) and math.isfinite(vv)):
-            raise UsageError(f"--cycle {p}: line {n}: time {tt} s or speed {vv} km/h "
-                                     "is not finite")
+            _fail(p, n, f"{len(cells)} values for {len(header)} columns")
+        values = {}
+        for c in ("time", "speed", "grade"):
+            if col[c] is None:
+                continue
+            try:
+                values[c] = csvtext.number(cells[col[c]])
+            except ValueError:
+                _fail(p, n, f"{c} {cells[col[c]]!r} is not a number")
+            if not math.isfinite(values[c]):
+                _fail(p, n, f"{c} {cells[col[c]]} is not finite")
+        tt, vv, gg = values["time"], values["speed"], values.get("grade", 0.0)
         if vv < 0 or tt < 0:
-            raise UsageError(f"--cycle {p}: line {n}: time {tt} s and speed {vv} km/h "
-                                     "must not be negative")
+            _fail(p, n, f"time {tt} s and speed {vv} km/h must not be negative")
+        if abs(gg) > GRADE_MAX_PCT:
+            _fail(p, n, f"grade {gg} % is beyond +-{GRADE_MAX_PCT:g} % (a percentage, uphill "
+                  "positive: 6 for 6 %)")
         if t and tt <= t[-1]:
-            raise UsageError(f"--cycle {p}: line {n}: time {tt} s does not increase "
-                                     f"(the row before has {t[-1]} s)")
+            _fail(p, n, f"time {tt} s does not increase (the row before has {t[-1]} s)")
         t.append(tt)
         v.append(vv * KMH)
-        ph.append(cells[ip] if ip is not None else "all")
+        g.append(gg / 100.0)
+        ph.append(cells[col["phase"]] if col["phase"] is not None else "all")
     if len(t) < 2:
         raise UsageError(f"--cycle {p}: at least two rows of time and speed are needed")
     phases = []
@@ -102,13 +176,14 @@ def read_csv_cycle(path):
         if not phases or phases[-1][0] != name:
             phases.append([name, t[k], t[k]])
         phases[-1][2] = t[min(k + 1, len(t) - 1)]
-    return Cycle(p.stem, np.array(t), np.array(v), [tuple(x) for x in phases], f"file {p}")
+    grade = np.array(g) if col["grade"] is not None else None
+    return Cycle(p.stem, np.array(t), np.array(v), [tuple(x) for x in phases], f"file {p}",
+                 grade)
 
 
 def load_cycle(text):
-    if text in ("wltc3", "nedc"):
+    if text in BUILTIN:
         return builtin_cycle(text)
     if not text.lower().endswith(".csv"):
-        raise UsageError(f"--cycle {text!r}: give wltc3, nedc or a .csv file")
+        raise UsageError(f"--cycle {text!r}: give one of {', '.join(BUILTIN)} or a .csv file")
     return read_csv_cycle(user_path(text))
-

@@ -24,8 +24,8 @@ def audit(run, E_through):
     energy = e["E_in"] - e["E_out"] - losses - e["E_damping"] + e["E_excitation"] \
         - (e["E_stored"] - float(run.rows["E_stored"][0]))
     return {"heat_residual_J": heat, "energy_residual_J": energy,
-            "heat_residual_relative": heat / E_through,
-            "energy_residual_relative": energy / E_through}
+            "heat_residual_relative": heat / E_through if E_through > 0 else None,
+            "energy_residual_relative": energy / E_through if E_through > 0 else None}
 
 
 def summarise(run, cycle, h):
@@ -52,11 +52,15 @@ def summarise(run, cycle, h):
         "wheel_energy_J": {"traction": float(np.sum(dE_out[dE_out > 0])),
                            "coast_and_braking_back": float(-np.sum(dE_out[dE_out < 0]))},
         "road_J": float(r["E_road"][-1]), "brakes_J": float(r["E_brake"][-1]),
+        "grade_J": float(r["E_grade"][-1]),
+        "vehicle": run.vehicle.record() if run.vehicle else None,
+        "driveline": run.driveline,
         "axle_losses_J": losses, "axle_loss_J": E_axle,
         "mesh_viscous_J": float(np.sum(0.5 * (r["P_loss_viscous"][1:]
                                               + r["P_loss_viscous"][:-1])) * h),
         "energy_into_axle_J": E_through,
-        "mean_axle_efficiency": 1.0 - E_axle / E_through if E_through > 0 else float("nan"),
+        # none when nothing went through the axle (a car that never moves)
+        "mean_axle_efficiency": 1.0 - E_axle / E_through if E_through > 0 else None,
         "T_oil_degC": {"start": float(r["T_oil"][0]) - ZERO_C, "end": float(r["T_oil"][-1])
                        - ZERO_C, "max": float(np.max(r["T_oil"])) - ZERO_C},
         "heat_to_air_J": float(r["Q_housing"][-1]),
@@ -66,21 +70,44 @@ def summarise(run, cycle, h):
     }
 
 
+def _minus(a, b):
+    return None if a is None or b is None else a - b
+
+
 def difference(cold, warm):
-    """warm - cold of the headline figures."""
+    """warm - cold of the headline figures (None where a figure is undefined)."""
     d = {part: warm["axle_losses_J"][part] - cold["axle_losses_J"][part] for part in PARTS}
+    eta = _minus(warm["mean_axle_efficiency"], cold["mean_axle_efficiency"])
     return {"axle_losses_J": d, "axle_loss_J": warm["axle_loss_J"] - cold["axle_loss_J"],
-            "axle_loss_relative": warm["axle_loss_J"] / cold["axle_loss_J"] - 1.0,
-            "mean_axle_efficiency_points": 100 * (warm["mean_axle_efficiency"]
-                                                  - cold["mean_axle_efficiency"]),
+            "axle_loss_relative": (warm["axle_loss_J"] / cold["axle_loss_J"] - 1.0
+                                   if cold["axle_loss_J"] > 0 else None),
+            "mean_axle_efficiency_points": None if eta is None else 100 * eta,
             "T_oil_end_degC": warm["T_oil_degC"]["end"] - cold["T_oil_degC"]["end"]}
+
+
+def car_line(car):
+    """One line on the car the run drove (summary.json has all of it)."""
+    if not car:
+        return ""
+    f, e = car["vehicle_fmu"], car["engine"]
+    drag = ", ".join(f"{T:g} N m at {n:g} rpm" for n, T in zip(e["drag_speed_rpm"],
+                                                              e["drag_torque_Nm"]))
+    return (f"Car ({car['source']}): m {f['m']:g} kg, r_dyn {f['r_dyn']:g} m, J_wheels "
+            f"{f['J_wheels']:g} kg m^2, c_rr {f['c_rr']:g}, CdA {f['CdA']:g} m^2, rho_air "
+            f"{f['rho_air']:.3f} kg/m^3; engine braking at the propeller shaft {drag} (clutch "
+            f"open below {e['clutch_open_below_kmh']:g} km/h), drive up to {e['T_max_Nm']:g} N m.")
+
+
+def _f(x, fmt, scale=1.0):
+    """x * scale in fmt, or 'n/a' for an undefined figure."""
+    return "n/a" if x is None else format(x * scale, fmt)
 
 
 def markdown(meta, runs, diff):
     kj = 1e-3
     lines = [f"# hypoid drive-cycle: {meta['cycle']}", "", f"Cycle: {meta['source']}; "
              f"level {meta['level']}; {meta['master']} master; step {meta['step_s']} s; "
-             f"air {meta['T_amb_degC']:.0f} degC.",
+             f"air {meta['T_amb_degC']:.0f} degC.", "", car_line(runs[0].get("vehicle")),
              "", "| | " + " | ".join(s["label"] for s in runs) + " |",
              "|---|" + "---|" * len(runs)]
 
@@ -92,15 +119,17 @@ def markdown(meta, runs, diff):
     row("distance (km)", lambda s: f"{s['distance_km']:.2f}")
     row("energy at the wheels, traction (kJ)",
         lambda s: f"{s['wheel_energy_J']['traction'] * kj:.0f}")
+    if any(abs(s["grade_J"]) > 0 for s in runs):
+        row("work against the grade, net (kJ)", lambda s: f"{s['grade_J'] * kj:.0f}")
     row("energy into the axle (kJ)", lambda s: f"{s['energy_into_axle_J'] * kj:.0f}")
     for part in PARTS:
         row(f"loss: {part} (kJ)", lambda s, p=part: f"{s['axle_losses_J'][p] * kj:.1f}")
     row("axle loss (kJ)", lambda s: f"{s['axle_loss_J'] * kj:.1f}")
-    row("mean axle efficiency (%)", lambda s: f"{100 * s['mean_axle_efficiency']:.2f}")
+    row("mean axle efficiency (%)", lambda s: _f(s["mean_axle_efficiency"], ".2f", 100))
     row("speed tracking RMS (km/h)", lambda s: f"{s['speed_tracking_rms_kmh']:.2f}")
     row("residual of the heat balance / energy audit (of the energy into the axle)",
-        lambda s: "{heat_residual_relative:.1e} / {energy_residual_relative:.1e}".format(
-            **s["audit"]))
+        lambda s: f"{_f(s['audit']['heat_residual_relative'], '.1e')} / "
+                  f"{_f(s['audit']['energy_residual_relative'], '.1e')}")
     row("wall time (s)", lambda s: f"{s['wall_s']:.1f}")
     lines += ["", "Losses by phase (kJ): mesh / churning / bearings / seals = total", ""]
     for s in runs:
@@ -109,8 +138,8 @@ def markdown(meta, runs, diff):
             + f" = {p['loss_J'] * kj:.1f}" for p in s["phases"]))
     if diff:
         lines += ["", f"Warm minus cold: axle loss {diff['axle_loss_J'] * kj:+.1f} kJ "
-                  f"({100 * diff['axle_loss_relative']:+.1f} %), mean efficiency "
-                  f"{diff['mean_axle_efficiency_points']:+.2f} %-points; "
+                  f"({_f(diff['axle_loss_relative'], '+.1f', 100)} %), mean efficiency "
+                  f"{_f(diff['mean_axle_efficiency_points'], '+.2f')} %-points; "
                   + ", ".join(f"{p} {diff['axle_losses_J'][p] * kj:+.1f} kJ" for p in PARTS)]
     return "\n".join(lines) + "\n"
 

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from hypoid import csvtext
 from hypoid.tca import surrogate as sur
 from hypoid.tca.gearset_file import (FLANK_SERIES, MAX_LEVELS, MESH_SERIES, PAIR_SERIES, UNITS,
                                  Gearset)
@@ -88,14 +89,11 @@ def read_table(path):
 
 
 def _delimiter(f):
-    """The cell separator of a table: ',' or, as spreadsheets write in locales with a decimal
-    comma, ';' (or a tab): whichever of them occurs most in the first non-comment lines."""
+    """The cell separator of a table (hypoid.csvtext.delimiter of its first lines)."""
     start = f.tell()
-    lines = [ln for ln in (f.readline() for _ in range(50)) if ln.strip()
-             and not ln.lstrip().startswith("#")]
+    lines = [f.readline() for _ in range(200)]
     f.seek(start)
-    text = "".join(lines)
-    return max(",;\t", key=text.count) if text else ","
+    return csvtext.delimiter(lines)
 
 
 def _csv_rows(reader):
@@ -149,8 +147,7 @@ def _cell(path, line, name, text):
             _fail(path, line, name, text, "blank cell; only ls and contact data may be blank")
         return math.nan
     try:
-        value = float(text.replace(",", ".") if text.count(",") == 1 and "." not in text
-                      else text)  # a decimal comma (tables separated by ';')
+        value = csvtext.number(text)  # also a decimal comma (tables separated by ';')
     except ValueError:
         _fail(path, line, name, text, "not a number")
     if math.isnan(value):

@@ -57,7 +57,7 @@ def test_bad_cycle_files_give_one_line_and_write_nothing(tmp_path, capsys, text,
 
 def test_bad_options_are_refused(tmp_path, capsys):
     code, _, err = run_cli(["--cycle", "wltc4", "--out", str(tmp_path)], capsys)
-    assert code == 2 and "wltc3, nedc or a .csv" in err
+    assert code == 2 and "wltc3, nedc, wltc3b, udds" in err and "or a .csv" in err
     code, _, err = run_cli(["--step", "5", "--out", str(tmp_path)], capsys)
     assert code == 2 and "--step" in err
 
