@@ -182,6 +182,7 @@ def check_table(table, speed_rpm=None, harmonics=HARMONICS, contact_harmonics=CO
     cols = {name: v[rows] for name, v in table.columns.items()}
     lines = table.lines[rows]
     _check_positive(table, lines, cols, ("k_m_N_per_m", "R_p_mm"), "must be positive")
+    _check_magnitudes(table, lines, cols, speed * math.pi / 30.0)
     values = {key: cols[name] * scale for name, (key, scale) in MESH_COLUMNS.items()}
     values["ls"] = _load_share(table, lines, cols)
     omega_p = speed * math.pi / 30.0  # [rad/s]
@@ -189,6 +190,46 @@ def check_table(table, speed_rpm=None, harmonics=HARMONICS, contact_harmonics=CO
     psi = N_p * ANGLE_COLUMNS[table.angle] * cols[table.angle] / 3.0
     name = table.meta.get("name", (0, os.path.splitext(os.path.basename(table.path))[0]))[1]
     return Checked(table.path, name, N_p, N_g, speed, psi, lines, values)
+
+
+# Plausible magnitudes (typical row) of a hypoid gear pair from a passenger car to a truck axle,
+# a decade and more around them on each side; a column off by 10^3 (a unit mixed up) is far out.
+MAGNITUDES = {  # column: (low, high, unit, what too small / too large most likely means)
+    "R_p_mm": (1.0, 1000.0, "mm", "metres", "micrometres"),
+    "k_m_N_per_m": (1e6, 1e11, "N/m", "N/mm or N/um", "N/m times 10^3"),
+    "r_px_mm": (0.5, 1e5, "mm", "metres", "micrometres"),
+    "r_gx_mm": (0.5, 1e5, "mm", "metres", "micrometres"),
+}
+SPEED_RATIO = (0.03, 30.0)  # flank speed / (omega_p R_p): rolling is of the order of omega_p R_p
+
+
+def _typical(values):
+    v = np.abs(values[np.isfinite(values)])
+    return float(np.median(v)) if len(v) else math.nan
+
+
+def _check_magnitudes(table, lines, cols, omega_p):
+    """A column whose typical value is off the plausible range by about 10^3: the likely unit
+    mix-up named (a radius in m under the mm header, a stiffness in N/mm, velocities in mm/s)."""
+    for name, (low, high, unit, small, large) in MAGNITUDES.items():
+        x = _typical(cols[name])
+        if x < low or x > high:
+            i = int(np.nanargmin(np.abs(np.abs(cols[name]) - x)))
+            _fail(table, lines[i], name, cols[name][i],
+                  f"implausible: typically {x:.4g} {unit}, expected {low:g} ... {high:g} {unit}; "
+                  f"values in {small if x < low else large} under the {unit} header?")
+    scale = omega_p * 1e-3 * _typical(cols["R_p_mm"])
+    for side in ("up", "ug"):
+        x_col, y_col = f"{side}_x_m_s", f"{side}_y_m_s"
+        speed = _typical(np.hypot(cols[x_col], cols[y_col]))
+        ratio = speed / scale
+        if not SPEED_RATIO[0] <= ratio <= SPEED_RATIO[1]:
+            i = int(np.nanargmin(np.abs(np.hypot(cols[x_col], cols[y_col]) - speed)))
+            _fail(table, lines[i], x_col, cols[x_col][i],
+                  f"implausible: flank speeds of typically {speed:.4g} m/s against omega_p R_p = "
+                  f"{scale:.4g} m/s at {omega_p * 30 / math.pi:g} rpm ({ratio:.3g} times): "
+                  + ("values in mm/s under the m/s header, or speed_rpm too small?" if ratio > 1
+                     else "values in km/s under the m/s header, or speed_rpm too large?"))
 
 
 def _meta_int(table, key):

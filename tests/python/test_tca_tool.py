@@ -584,6 +584,40 @@ def test_table_may_start_inside_contact(tmp_path):
                                    atol=1e-6 * np.abs(s(psi)).max(), err_msg=key)
 
 
+def scale_column(*columns, factor):
+    """Edit: every non-blank cell of the columns times factor (a unit mixed up)."""
+    def edit(lines):
+        h = header_index(lines)
+        names = lines[h].split(",")
+        for k in range(h + 1, len(lines)):
+            cells = lines[k].split(",")
+            for c in columns:
+                j = names.index(c)
+                if cells[j]:
+                    cells[j] = repr(float(cells[j]) * factor)
+            lines[k] = ",".join(cells)
+        return lines
+    return edit
+
+
+@pytest.mark.parametrize("columns, factor, words", [
+    (("R_p_mm",), 1e-3, ["R_p_mm", "metres under the mm header"]),
+    (("R_p_mm",), 1e3, ["R_p_mm", "micrometres"]),
+    (("k_m_N_per_m",), 1e-3, ["k_m_N_per_m", "N/mm"]),
+    (("r_px_mm", "r_py_mm", "r_gx_mm", "r_gy_mm"), 1e-3, ["r_px_mm", "metres"]),
+    (("up_x_m_s", "up_y_m_s"), 1e3, ["up_x_m_s", "mm/s under the m/s header"]),
+    (("ug_x_m_s", "ug_y_m_s"), 1e-3, ["ug_x_m_s", "km/s"]),
+])
+def test_a_column_off_by_a_thousand_names_the_unit_mix_up(tmp_path, columns, factor, words):
+    """Before, R_p in metres under the mm header imported (1000x small) and the FMU then failed
+    with ARK_TOO_MUCH_WORK."""
+    path = edit_table(tmp_path, scale_column(*columns, factor=factor))
+    with pytest.raises(tca.TableError) as err:
+        tca.import_table(path)
+    for w in words + ["implausible", "line "]:
+        assert w in str(err.value), (w, str(err.value))
+
+
 def test_cli_prints_the_error_and_returns_2(tmp_path, capsys):
     from hypoid import cli
 
