@@ -7,6 +7,15 @@
  *   bench_fmu FMU_DIR steps [options]         real-time factor of every level against the
  *                                             communication step, 1 us ... 1 s
  *   bench_fmu FMU_DIR run LEVEL [options]     one timed run of one level (for perf record)
+ *   bench_fmu FMU_DIR replay FILE [options]   the inputs of a recorded co-simulation, one row a
+ *                                             communication step (a CSV whose header names
+ *                                             inputs, the first column the time), after the
+ *                                             --set values: CPU, solver steps, right-hand
+ *                                             sides and the energy outputs at the end (for perf
+ *                                             record and callgrind on a drive cycle; with
+ *                                             --ramp 1 each input ramps from where the last
+ *                                             step ended to the row's value over the step, given
+ *                                             as input derivatives, as bench/drive_cycle.py does)
  *
  * options: --h H (communication step [s], default 1e-3), --runs N (timed batches, default 5),
  *   --cpu S (CPU seconds per batch, default 0.2), --warm T (simulated start-up before timing,
@@ -74,6 +83,7 @@ typedef struct {
     const char *variants[MAX_VARIANTS]; /* LABEL:SETS */
     int n_variants;
     const char *vs; /* the other FMU's directory, or NULL */
+    int ramp;       /* replay: inputs as ramps (input derivatives) instead of held values */
 } options;
 
 typedef struct {
@@ -271,6 +281,110 @@ done:
     return rc ? host_fail("a run failed or the FMU logged errors") : 0;
 }
 
+/* ------------------------------------------------------------------ replay */
+
+#define REPLAY_MAX_COLS 16
+#define REPLAY_LINE 4096
+
+/* The inputs of a recorded co-simulation: the header's names after the first (time) column. */
+typedef struct {
+    FILE *fp;
+    int n; /* inputs */
+    fmi2ValueReference vr[REPLAY_MAX_COLS];
+    char names[REPLAY_MAX_COLS][64];
+} replay_file;
+
+static int replay_open(replay_file *r, const fmu_info *m, const char *path)
+{
+    char line[REPLAY_LINE], *tok, *save = NULL;
+    int col = 0;
+    memset(r, 0, sizeof *r);
+    if (!(r->fp = fopen(path, "r")) || !fgets(line, sizeof line, r->fp)) return host_fail(path);
+    line[strcspn(line, "\r\n")] = '\0';
+    for (tok = strtok_r(line, ",", &save); tok; tok = strtok_r(NULL, ",", &save), col++) {
+        if (col == 0) continue; /* the time */
+        if (r->n >= REPLAY_MAX_COLS || vr_of(m, tok, &r->vr[r->n])) return -1;
+        snprintf(r->names[r->n++], sizeof r->names[0], "%s", tok);
+    }
+    return r->n ? 0 : host_fail("replay: no inputs in the header");
+}
+
+/* The next row's inputs into u; 1 at the end of the file. */
+static int replay_row(replay_file *r, double *u)
+{
+    char line[REPLAY_LINE], *tok, *save = NULL;
+    int col = 0;
+    if (!fgets(line, sizeof line, r->fp)) return 1;
+    for (tok = strtok_r(line, ",", &save); tok && col <= r->n; tok = strtok_r(NULL, ",", &save))
+        if (col++ > 0) u[col - 2] = strtod(tok, NULL);
+    return col == r->n + 1 ? 0 : host_fail("replay: short row");
+}
+
+/* The inputs of one row for the step of h: held, or (ramp) from where the last step's ramp
+ * ended (u_end, u0 + du h exactly as the FMU extrapolates it) to the row's value. */
+static int replay_inputs(instance *in, const replay_file *r, const double *u, double *u_end,
+                         int ramp, double h)
+{
+    double val[REPLAY_MAX_COLS], der[REPLAY_MAX_COLS];
+    fmi2Integer order[REPLAY_MAX_COLS];
+    int k;
+    for (k = 0; k < r->n; k++) {
+        val[k] = ramp ? u_end[k] : u[k];
+        der[k] = ramp ? (u[k] - val[k]) / h : 0.0;
+        order[k] = 1;
+        u_end[k] = val[k] + der[k] * h;
+    }
+    if (in->f->set_real(in->c, r->vr, (size_t)r->n, val) != fmi2OK) return host_fail("fmi2SetReal");
+    if (ramp && in->f->set_real_input_derivatives(in->c, r->vr, (size_t)r->n, order, der) != fmi2OK)
+        return host_fail("fmi2SetRealInputDerivatives");
+    return 0;
+}
+
+static const char *const REPLAY_OUT[] = {"E_in", "E_out", "E_friction", "E_churn", "E_bearings",
+                                         "E_seals", "Q_housing", "T_oil", "w_p"};
+#define N_REPLAY_OUT (int)(sizeof REPLAY_OUT / sizeof REPLAY_OUT[0])
+
+static int replay_report(bench *b, int n, double cpu)
+{
+    fmi2ValueReference vr[N_REPLAY_OUT];
+    double out[N_REPLAY_OUT], w = 0.0;
+    long s = 0, e = 0;
+    int k;
+    for (k = 0; k < N_REPLAY_OUT; k++)
+        if (vr_of(b->in.m, REPLAY_OUT[k], &vr[k])) return -1;
+    if (b->in.f->get_real(b->in.c, vr, N_REPLAY_OUT, out) != fmi2OK || counters(b, &w, &s, &e))
+        return host_fail("replay: outputs");
+    printf("replay: %d steps to t = %.6g s: CPU %.4g s (real-time factor %.4g), %ld solver steps "
+           "(%.4g a step), %ld rhs evaluations (%.4g a step)\n", n, b->t, cpu, b->t / cpu, s,
+           (double)s / n, e, (double)e / n);
+    for (k = 0; k < N_REPLAY_OUT; k++) printf("  %s = %.12g\n", REPLAY_OUT[k], out[k]);
+    return 0;
+}
+
+static int mode_replay(const variant *v, const options *o, const char *path)
+{
+    static const level none = {"replay", ""};
+    replay_file r;
+    bench b;
+    double u[REPLAY_MAX_COLS], u_end[REPLAY_MAX_COLS], t0, cpu = 0.0;
+    int n = 0, rc = -1, end = 0, k;
+    if (replay_open(&r, v->m, path)) return -1;
+    t0 = cpu_now();
+    if (open_bench(&b, v, &none, o)) goto done;
+    for (k = 0; k < r.n; k++)
+        if (b.in.f->get_real(b.in.c, &r.vr[k], 1, &u_end[k]) != fmi2OK) goto done;
+    while (!(end = replay_row(&r, u))) {
+        if (replay_inputs(&b.in, &r, u, u_end, o->ramp, o->h) || steps(&b, 1, o->h)) goto done;
+        n++;
+    }
+    cpu = cpu_now() - t0;
+    rc = end < 0 || b.in.log.errors ? -1 : replay_report(&b, n, cpu);
+done:
+    host_close(&b.in);
+    fclose(r.fp);
+    return rc;
+}
+
 static int chosen(const options *o, const char *name)
 {
     const char *p = o->levels;
@@ -359,7 +473,7 @@ static int parse(int argc, char **argv, int first, options *o)
 {
     int k;
     o->h = 1e-3, o->cpu_budget = 0.2, o->warm = 0.2, o->runs = 5, o->read = 1;
-    o->n_sets = 0, o->levels = NULL, o->n_variants = 0, o->vs = NULL;
+    o->n_sets = 0, o->levels = NULL, o->n_variants = 0, o->vs = NULL, o->ramp = 0;
     for (k = first; k < argc; k++) {
         const char *a = argv[k], *v = k + 1 < argc ? argv[k + 1] : NULL;
         if (!v) return host_fail(a);
@@ -376,6 +490,7 @@ static int parse(int argc, char **argv, int first, options *o)
                  o->n_variants < MAX_VARIANTS / 2)
             o->variants[o->n_variants++] = v;
         else if (strcmp(a, "--vs") == 0) o->vs = v;
+        else if (strcmp(a, "--ramp") == 0) o->ramp = atoi(v);
         else return host_fail(a);
     }
     if (o->h <= 0.0 || o->runs < 1 || o->runs > MAX_RUNS || o->cpu_budget <= 0.0 || o->warm < 0.0)
@@ -409,6 +524,7 @@ static int run_mode(int argc, char **argv, const options *o, const variant *v, i
     if (strcmp(argv[2], "levels") == 0) return mode_levels(v, nv, o);
     if (strcmp(argv[2], "steps") == 0) return mode_steps(v, o);
     if (argc > 3 && strcmp(argv[2], "run") == 0) return mode_run(v, o, argv[3]);
+    if (argc > 3 && strcmp(argv[2], "replay") == 0) return mode_replay(v, o, argv[3]);
     return host_fail("unknown mode");
 }
 
@@ -418,11 +534,11 @@ int main(int argc, char **argv)
     fmu_lib f, f_vs;
     options o;
     variant v[MAX_VARIANTS];
-    int rc = -1, run = argc > 3 && strcmp(argv[2], "run") == 0;
+    int rc = -1, run = argc > 3 && (strcmp(argv[2], "run") == 0 || strcmp(argv[2], "replay") == 0);
     if (argc < 3 || parse(argc, argv, run ? 4 : 3, &o)) {
-        fprintf(stderr, "usage: bench_fmu FMU_DIR levels|steps|run LEVEL [--h H] [--runs N] "
-                "[--cpu S] [--warm T] [--read none|few|all] [--set NAME=VALUE] [--levels a,b] "
-                "[--variant LABEL:NAME=VALUE,...] [--vs FMU_DIR]\n");
+        fprintf(stderr, "usage: bench_fmu FMU_DIR levels|steps|run LEVEL|replay FILE [--h H] "
+                "[--runs N] [--cpu S] [--warm T] [--read none|few|all] [--set NAME=VALUE] "
+                "[--levels a,b] [--variant LABEL:NAME=VALUE,...] [--vs FMU_DIR] [--ramp 0|1]\n");
         return 2;
     }
     if (host_read_info(&m, argv[1])) return 1;
