@@ -32,6 +32,16 @@ static double shaft2_torque(const hg_dyn_params *p, const double *y)
     return p->k_t2 * y[HG_Y_TWIST2] + p->c_t2 * (y[HG_Y_W_G] - y[HG_Y_W_W]);
 }
 
+int hg_dyn_quasi_static_input(const hg_dyn_params *p)
+{
+    return p->mesh == HG_MESH_MODEL_RIGID && p->friction.model == HG_FRICTION_MODEL_MAP;
+}
+
+double hg_dyn_input_speed(const hg_dyn_params *p, const double *y)
+{
+    return hg_dyn_quasi_static_input(p) ? y[HG_Y_W_P] : y[HG_Y_W_S];
+}
+
 int hg_dyn_loaded_law(const hg_dyn_params *p)
 {
     return p->mesh == HG_MESH_MODEL_VARYING && p->gear->n_levels > 1;
@@ -206,7 +216,7 @@ static void pair_friction(const hg_dyn_params *p, const double *y,
 static void map_loss(const hg_dyn_params *p, const double *y,
                      hg_dyn_eval *ev)
 {
-    double w_p = y[HG_Y_W_P], T_1 = shaft1_torque(p, y), T_2p = shaft2_torque(p, y) / p->ratio;
+    double w_p = y[HG_Y_W_P], T_1 = ev->T_1, T_2p = shaft2_torque(p, y) / p->ratio;
     int coast = -T_2p * w_p > T_1 * w_p; /* power enters from the wheel side */
     double T_in = coast ? T_2p : T_1;
     double eta = hg_effmap_eta(p->map, coast ? HG_MAP_COAST : HG_MAP_DRIVE, w_p, T_in, ev->T_oil);
@@ -231,22 +241,27 @@ static void axle_losses(const hg_dyn_params *p, const double *y, hg_dyn_eval *ev
                      ev->T_oil, &ev->axle);
 }
 
-/* Rigid mesh: the pinion-gear body's acceleration and the mesh load it implies. Friction needs
- * the load and changes the acceleration: one pass from the frictionless load suffices (the
- * friction torques change W_t by a fraction mu of the inertial part). */
-static void rigid_mesh(const hg_dyn_params *p, const double *y,
+/* Rigid mesh: the pinion-gear body's acceleration and the mesh load it implies. At the map level
+ * the body includes the input shaft's end: the input shaft is quasi-static there
+ * (hg_dyn_quasi_static_input), a massless spring carrying T_1 = T_s - I_s acc to the pinion.
+ * Friction needs the load and changes the acceleration: one pass from the frictionless load
+ * suffices (the friction torques change W_t by a fraction mu of the inertial part). */
+static void rigid_mesh(const hg_dyn_params *p, const hg_inputs *u, const double *y,
                        int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
-    double i = p->ratio, J = p->I_p + p->I_g / (i * i);
-    double T_1 = shaft1_torque(p, y), T_2 = shaft2_torque(p, y), acc, T_p, T_g;
-    acc = (T_1 - T_2 / i) / J;
+    int qs = hg_dyn_quasi_static_input(p);
+    double i = p->ratio, I_s = qs ? p->I_s : 0.0, J = I_s + p->I_p + p->I_g / (i * i);
+    double T_in = qs ? u->T_s : shaft1_torque(p, y), T_2 = shaft2_torque(p, y), acc, T_p, T_g;
+    acc = (T_in - T_2 / i) / J;
+    ev->T_1 = T_in - I_s * acc;
     ev->W_t = (p->I_g * acc / i + T_2) / ev->R_g;
     net_force_loads(ev);
     losses(p, y, all_pairs, T_c_warm, ev);
     axle_losses(p, y, ev);
     T_p = ev->T_fp + ev->axle.T_p;
     T_g = ev->T_fg + ev->axle.T_g;
-    ev->acc_p = (T_1 - T_2 / i + T_p + T_g / i) / J;
+    ev->acc_p = (T_in - T_2 / i + T_p + T_g / i) / J;
+    ev->T_1 = T_in - I_s * ev->acc_p;
     ev->W_t = (p->I_g * ev->acc_p / i + T_2 - T_g) / ev->R_g;
     net_force_loads(ev);
 }
@@ -281,7 +296,7 @@ static double source_power(double P_end, double P_member, double P_scale)
 static void efficiency(const hg_inputs *u, const double *y, hg_dyn_eval *ev)
 {
     double w_p = y[HG_Y_W_P], w_g = y[HG_Y_W_G];
-    double end_s = u->T_s * y[HG_Y_W_S], end_w = -ev->T_w * y[HG_Y_W_W];
+    double end_s = u->T_s * ev->w_s, end_w = -ev->T_w * y[HG_Y_W_W];
     double mesh_p = (ev->mesh.R_p * ev->W_t - ev->T_fp) * w_p;
     double mesh_g = -(ev->R_g * ev->W_t + ev->T_fg) * w_g;
     ev->P_in = larger(at_least_zero(source_power(end_s, mesh_p, ev->P_loss)),
@@ -326,8 +341,10 @@ double hg_dyn_oil_temperature(const hg_dyn_params *p, const hg_inputs *u, const 
 void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const double *y,
                      int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
-    double d1 = y[HG_Y_W_S] - y[HG_Y_W_P], d2 = y[HG_Y_W_G] - y[HG_Y_W_W];
+    double d1, d2 = y[HG_Y_W_G] - y[HG_Y_W_W];
     memset(ev, 0, sizeof *ev);
+    ev->w_s = hg_dyn_input_speed(p, y);
+    d1 = ev->w_s - y[HG_Y_W_P];
     ev->T_oil = hg_dyn_oil_temperature(p, u, y);
     mesh_state(p, mode, y, ev);
     if (p->speed_governor)
@@ -336,8 +353,9 @@ void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const
     else
         ev->T_w = u->T_w;
     if (p->mesh == HG_MESH_MODEL_RIGID) {
-        rigid_mesh(p, y, all_pairs, T_c_warm, ev);
+        rigid_mesh(p, u, y, all_pairs, T_c_warm, ev);
     } else {
+        ev->T_1 = shaft1_torque(p, y);
         losses(p, y, all_pairs, T_c_warm, ev);
         axle_losses(p, y, ev);
     }
@@ -358,12 +376,14 @@ void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const
 void hg_dyn_derivatives(const hg_dyn_params *p, const hg_inputs *u, const double *y,
                         const hg_dyn_eval *ev, double *ydot)
 {
-    double T_1 = shaft1_torque(p, y), T_2 = shaft2_torque(p, y);
+    double T_1 = ev->T_1, T_2 = shaft2_torque(p, y);
     ydot[HG_Y_TWIST1] = y[HG_Y_W_S] - y[HG_Y_W_P];
     ydot[HG_Y_TWIST2] = y[HG_Y_W_G] - y[HG_Y_W_W];
     ydot[HG_Y_PHI_P] = y[HG_Y_W_P];
     ydot[HG_Y_X] = ev->xdot;
     ydot[HG_Y_W_S] = (u->T_s - T_1) / p->I_s;                                      /* eq. 20 */
+    if (hg_dyn_quasi_static_input(p)) /* twist and speed of the input end are not states */
+        ydot[HG_Y_TWIST1] = ydot[HG_Y_W_S] = 0.0;
     if (p->mesh == HG_MESH_MODEL_RIGID) {
         ydot[HG_Y_W_P] = ev->acc_p;
         ydot[HG_Y_W_G] = ev->acc_p / p->ratio;
@@ -374,7 +394,7 @@ void hg_dyn_derivatives(const hg_dyn_params *p, const hg_inputs *u, const double
     }
     ydot[HG_Y_W_W] = (T_2 - ev->T_w) / p->I_w;                                     /* eq. 23 */
     ydot[HG_Y_GOV] = p->speed_governor ? y[HG_Y_W_W] - u->w_set / p->ratio : 0.0;
-    ydot[HG_Y_E_IN] = u->T_s * y[HG_Y_W_S];
+    ydot[HG_Y_E_IN] = u->T_s * ev->w_s;
     ydot[HG_Y_E_OUT] = ev->T_w * y[HG_Y_W_W];
     ydot[HG_Y_E_FRIC] = ev->P_loss;
     ydot[HG_Y_E_DAMP] = ev->P_damp;
@@ -392,7 +412,7 @@ void hg_dyn_derivatives(const hg_dyn_params *p, const hg_inputs *u, const double
 
 double hg_dyn_stored_energy(const hg_dyn_params *p, const double *y, const hg_dyn_eval *ev)
 {
-    double ws = y[HG_Y_W_S], wp = y[HG_Y_W_P], wg = y[HG_Y_W_G], ww = y[HG_Y_W_W];
+    double ws = hg_dyn_input_speed(p, y), wp = y[HG_Y_W_P], wg = y[HG_Y_W_G], ww = y[HG_Y_W_W];
     double t1 = y[HG_Y_TWIST1], t2 = y[HG_Y_TWIST2];
     double mesh = p->mesh == HG_MESH_MODEL_RIGID ? 0.0
                   : hg_dyn_loaded_law(p)           ? ev->U_mesh

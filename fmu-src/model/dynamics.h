@@ -75,6 +75,9 @@ typedef struct {
     double W_drive;    /* compressive load on the drive flank, max(k_m f_d + c g_d xdot, 0) [N] */
     double W_coast;    /* compressive load on the back flank, max(-(k_m f_b + c g_b xdot), 0) [N] */
     double T_w;        /* wheel-end torque, input or governor [N m] */
+    double T_1;        /* input shaft torque on the pinion [N m]: its spring's, or T_s - I_s acc
+                          when the shaft is quasi-static */
+    double w_s;        /* speed of the input shaft's end [rad/s] (hg_dyn_input_speed) */
     double T_fp, T_fg; /* friction torques on pinion and gear [N m] */
     double acc_p;      /* pinion acceleration of the rigid mesh [rad/s^2] */
     double P_loss, P_in, eta;
@@ -111,6 +114,16 @@ void hg_dyn_derivatives(const hg_dyn_params *p, const hg_inputs *u, const double
 /* Whether the mesh force follows the layered file's force law (mesh/mesh_law.h) instead of
  * k_m f(x): the varying mesh with tooth data of several torque levels. */
 int hg_dyn_loaded_law(const hg_dyn_params *p);
+
+/* Whether the input shaft is quasi-static (docs/model.md, "Fidelity levels"): at the map level
+ * (rigid mesh, the loss from the efficiency map, nothing on the mesh's time scale) its mode with
+ * the pinion, above a kilohertz, is not resolved; the shaft is a massless spring and its end
+ * turns with the pinion (its twist and speed states stay constant). */
+int hg_dyn_quasi_static_input(const hg_dyn_params *p);
+
+/* The speed of the input shaft's end [rad/s]: its state, or the pinion's when the shaft is
+ * quasi-static. */
+double hg_dyn_input_speed(const hg_dyn_params *p, const double *y);
 
 /* Kinetic plus elastic energy at y [J]. */
 double hg_dyn_stored_energy(const hg_dyn_params *p, const double *y, const hg_dyn_eval *ev);

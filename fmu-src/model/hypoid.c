@@ -241,7 +241,7 @@ static int advance(hg_model *m, const hg_vars *v, const hg_inputs *du, double h,
     hg_solver_stats(m->solver, &steps1, &evals);
     rt->h_int = h / (double)(steps1 > steps0 ? steps1 - steps0 : 1);
     rt->ahead = pass;
-    hg_stepping_end(rt, &m->s, t_end, &m->log);
+    hg_stepping_end(rt, &m->s, t_end, h, &m->log);
     return 0;
 }
 

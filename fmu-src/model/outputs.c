@@ -40,7 +40,7 @@ static void write_motion(const hg_setup *s, const hg_runtime *rt, const hg_dyn_e
                          long steps, long evals, hg_vars *v)
 {
     const double *y = rt->y;
-    v->w_s = y[HG_Y_W_S];
+    v->w_s = hg_dyn_input_speed(&s->p, y);
     v->w_p = y[HG_Y_W_P];
     v->w_g = y[HG_Y_W_G];
     v->w_w = y[HG_Y_W_W];

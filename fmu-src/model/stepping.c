@@ -63,7 +63,7 @@ void hg_stepping_start(hg_runtime *rt, const hg_setup *s, const hg_vars *v, doub
         mesh.k_m = p->k_m0;
         mesh.R_p = p->R_p0;
     }
-    y[HG_Y_TWIST1] = v->T_s / v->k_t1;
+    y[HG_Y_TWIST1] = hg_dyn_quasi_static_input(p) ? 0.0 : v->T_s / v->k_t1;
     y[HG_Y_W_S] = y[HG_Y_W_P] = v->w_p0;
     y[HG_Y_W_G] = y[HG_Y_W_W] = v->w_p0 / p->ratio;
     y[HG_Y_T_OIL] = v->T_oil0;
@@ -253,9 +253,12 @@ static void check_map_range(hg_runtime *rt, const hg_effmap *map, int s_sump,
             map->K[0] - 273.15, map->K[map->n_K - 1] - 273.15);
 }
 
-void hg_stepping_end(hg_runtime *rt, const hg_setup *s, double t_end, const hg_logger *lg)
+void hg_stepping_end(hg_runtime *rt, const hg_setup *s, double t_end, double h,
+                     const hg_logger *lg)
 {
+    int k;
     rt->t = t_end;
-    hg_stepping_inputs_at(rt, t_end, &rt->u_end);
+    for (k = 0; k < HG_NUM_INPUTS; k++) /* u0 + du h, not du (t_end - t_u0): a host's own sum */
+        *hg_input(&rt->u_end, k) = hg_input_value(&rt->u0, k) + hg_input_value(&rt->du, k) * h;
     check_map_range(rt, s->p.map, s->p.ledger.sump, lg);
 }

@@ -17,7 +17,7 @@ typedef struct {
     double T_c_warm[HG_MAX_PAIRS]; /* warm starts of the thermal solves [K] */
     hg_inputs u0, du;              /* inputs at the step start and their time derivatives */
     double t_u0;                   /* time at which u0 holds */
-    hg_inputs u_end;               /* inputs extrapolated to the end of the last step */
+    hg_inputs u_end;               /* inputs extrapolated to the end of the last step, u0 + du h */
     int restart;                   /* the integrator must restart before the next step */
     int held;                      /* steps in a row with the inputs unchanged (capped) */
     int ahead;                     /* the integrator stepped past t on the last step's inputs */
@@ -80,8 +80,10 @@ void hg_stepping_contact_event(hg_runtime *rt, const hg_setup *s, const int *dir
 /* The end of an averaging window: eta_cycle and P_loss_cycle over it. */
 void hg_stepping_window_event(hg_runtime *rt, const hg_logger *lg);
 
-/* The end of a step at t_end: the final inputs, and a warning once when the map level leaves
- * its grid. */
-void hg_stepping_end(hg_runtime *rt, const hg_setup *s, double t_end, const hg_logger *lg);
+/* The end of a step of h at t_end: the final inputs u0 + du h (the very bits a host computes
+ * when it continues a ramp: then the next step's inputs do not jump), and a warning once when
+ * the map level leaves its grid. */
+void hg_stepping_end(hg_runtime *rt, const hg_setup *s, double t_end, double h,
+                     const hg_logger *lg);
 
 #endif

@@ -131,6 +131,49 @@ static void test_rigid_mesh(void)
     CHECK(ydot[HG_Y_X] == 0.0);
 }
 
+/* The map level: the input shaft's end joins the body (I_s + I_p + I_g / i^2), driven by T_s; the
+ * shaft is quasi-static, carrying T_1 = T_s - I_s acc, and its twist and speed states stay put.
+ * A map of eta = 0.9 everywhere: the pinion loses 0.1 T_1 of the frictionless pass's T_1 (w_p far
+ * above the spin regularisation). */
+static void test_map_level_quasi_static_input(void)
+{
+    static double eta[16], M[4];
+    static const double axis[3][2] = {{0.0, 600.0}, {0.0, 500.0}, {250.0, 450.0}};
+    hg_dyn_params p = params(HG_MESH_MODEL_RIGID);
+    hg_effmap map;
+    hg_inputs u = inputs(800.0, 0.0, 0.0);
+    double y[HG_NY] = {0}, ydot[HG_NY], i = N_G / N_P, J = 2.8e-2 + 0.29 / (i * i), acc0, T_fp,
+           acc;
+    hg_dyn_eval ev;
+    int k;
+    memset(&map, 0, sizeof map);
+    for (k = 0; k < 16; k++) eta[k] = 0.9;
+    map.n_w = map.n_T = map.n_K = 2;
+    memcpy(map.w, axis[0], sizeof axis[0]);
+    memcpy(map.T, axis[1], sizeof axis[1]);
+    memcpy(map.K, axis[2], sizeof axis[2]);
+    map.eta = eta;
+    map.M_w = map.M_T = map.M_K = M; /* two nodes: no curvature */
+    p.friction.model = HG_FRICTION_MODEL_MAP;
+    p.map = &map;
+    y[HG_Y_TWIST1] = 1e-3;  /* not a state here: no torque of its own */
+    y[HG_Y_TWIST2] = -2e-4; /* T_2 = -160 N m */
+    y[HG_Y_W_S] = 5.0;      /* nor this: the input end turns with the pinion */
+    y[HG_Y_W_P] = 300.0;
+    y[HG_Y_W_G] = 300.0 / i;
+    evaluate(&p, &u, y, ydot, &ev);
+    acc0 = (800.0 + 160.0 / i) / J;
+    T_fp = -0.1 * (800.0 - 1.4e-2 * acc0) * 300.0 / sqrt(300.0 * 300.0 + 1e-6);
+    acc = (800.0 + 160.0 / i + T_fp) / J;
+    CHECK_CLOSE(ev.T_fp, T_fp, 1e-12, 0.0);
+    CHECK_CLOSE(ydot[HG_Y_W_P], acc, 1e-12, 0.0);
+    CHECK_CLOSE(ydot[HG_Y_W_G], acc / i, 1e-12, 0.0);
+    CHECK_CLOSE(ev.T_1, 800.0 - 1.4e-2 * acc, 1e-12, 0.0);
+    CHECK_CLOSE(ev.W_t, (0.29 * acc / i - 160.0) / (21.01e-3 * i), 1e-12, 0.0);
+    CHECK(ydot[HG_Y_TWIST1] == 0.0 && ydot[HG_Y_W_S] == 0.0 && ydot[HG_Y_E_DAMP] == 0.0);
+    CHECK(ev.w_s == 300.0 && ydot[HG_Y_E_IN] == 800.0 * 300.0);
+}
+
 /* The speed governor's wheel torque: T_s i + K_p (w_w - w_set / i) + K_i * integral. */
 static void test_governor(void)
 {
@@ -220,6 +263,7 @@ int main(void)
     test_static_equilibrium();
     test_known_twist();
     test_rigid_mesh();
+    test_map_level_quasi_static_input();
     test_governor();
     test_power_balance(HG_MESH_MODEL_MEAN);
     test_power_balance(HG_MESH_MODEL_RIGID);
