@@ -67,7 +67,3 @@ def main(argv=None):
             text = f"unexpected {type(e).__name__}: {text} (HYPOID_TRACEBACK=1 shows where)"
         print(f"{prog}: {text}", file=sys.stderr)
         return 2
-
-
-if __name__ == "__main__":
-    sys.exit(main())
