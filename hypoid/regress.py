@@ -19,7 +19,8 @@ Its reference goes to <file>.reference.csv beside it unless --reference names an
 tolerances are tests/regression/tolerances.csv unless --tolerances names another file (columns
 quantity, rel, abs; documented in tests/regression/README.md). Each scenario runs a fixed time
 (no steady-state detection, so only the FMU is under test): 60 mesh cycles, then 20 mesh cycles
-sampled 32 times per cycle. The quantities compared are those of the study tables.
+sampled 32 times per cycle. The quantities compared are those of the study tables, and in a
+scenario with axle_losses = full the axle's ledger too (P_axle, eta_axle, every part, T_oil).
 """
 
 import csv
@@ -59,6 +60,8 @@ SCENARIOS = {
 QUANTITIES = ("eta_rms", "eta_energy", "P_loss_mean_W", "speed_mean_rpm", "DTE_mean_um",
               "DTE_pp_um", "DTE_min_minus_b_um", "contact_loss_fraction", "W_t_mean_N",
               "W_t_peak_N", "mu_mean", "h_c_mean_um", "lambda_mean", "T_c_max_C")
+# and in a scenario with axle_losses = full, the axle's ledger (hypoid.study.metrics)
+AXLE_QUANTITIES = metrics.AXLE_FIGURES
 
 
 def run_scenario(inst, params):
@@ -71,8 +74,9 @@ def run_scenario(inst, params):
     spc = settings.samples_per_cycle
     sampler.sample(SETTLE_CYCLES * spc, h)
     window = sampler.sample(RECORD_CYCLES * spc, h)
-    row = metrics.window_metrics(window, steady.half_backlash(inst))
-    return {q: row[q] for q in QUANTITIES}
+    axle = steady.whole_axle(inst)
+    row = metrics.window_metrics(window, steady.half_backlash(inst), axle=axle)
+    return {q: row[q] for q in QUANTITIES + (AXLE_QUANTITIES if axle else ())}
 
 
 def run_all(fmu_path, scenarios=SCENARIOS):
@@ -144,7 +148,7 @@ def compare(values, ref, ref_params, tol, scenarios=SCENARIOS):
         if ref_params.get(name) != _params_text(scenarios[name]):
             problems.append(f"{name}: the reference was made for other parameters "
                             f"({ref_params.get(name)})")
-        for q in QUANTITIES:
+        for q in values[name]:  # QUANTITIES, and AXLE_QUANTITIES in an axle scenario
             r, v = ref[name].get(q, math.nan), values[name][q]
             rel, ab = tol[q]
             allowed = ab + rel * abs(r)

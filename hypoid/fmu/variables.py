@@ -11,7 +11,7 @@ from typing import NamedTuple
 
 MODEL_NAME = 'HypoidGearPair'
 MODEL_VERSION = '0.1.0'
-GUID = '{9dc7990d-70b7-5058-8a88-cb9b5bb2dced}'
+GUID = '{fcade00c-15b5-571a-b6eb-3fab703d9201}'
 
 
 class Variable(NamedTuple):
@@ -113,10 +113,10 @@ _TABLE = (
     Variable(name='P_churn', vr=76, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='churning loss of the ring gear in the sump (axle_losses = full; Changenet & Velex)'),
     Variable(name='P_bearings', vr=77, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description="friction loss of the four tapered roller bearings (axle_losses = full; Palmgren's M_0 + M_1)"),
     Variable(name='P_seals', vr=78, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='friction loss of the pinion seal and the two axle-shaft seals (axle_losses = full; ISO/TR 14179-2)'),
-    Variable(name='P_axle', vr=79, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='all losses of the axle: P_loss + P_churn + P_bearings + P_seals'),
+    Variable(name='P_axle', vr=79, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description="losses of the axle: P_loss + P_churn + P_bearings + P_seals; with axle_losses = mesh (the default, the paper's scene) the mesh friction P_loss alone, the other parts being 0: set axle_losses = full for the whole axle"),
     Variable(name='P_in_axle', vr=80, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='power entering the axle from the side that drives at this instant (pinion shaft or wheel shaft)'),
-    Variable(name='eta_axle', vr=81, causality='output', variability='continuous', type='Real', enumeration=None, unit='', display_unit=None, start=None, min=None, max=None, description='axle efficiency 1 - P_axle / P_in_axle (0 when no power enters but losses occur)'),
-    Variable(name='eta_axle_cycle', vr=82, causality='output', variability='continuous', type='Real', enumeration=None, unit='', display_unit=None, start=None, min=None, max=None, description='RMS of eta_axle over the last completed window of n_avg_cycles mesh cycles (like eta_cycle)'),
+    Variable(name='eta_axle', vr=81, causality='output', variability='continuous', type='Real', enumeration=None, unit='', display_unit=None, start=None, min=None, max=None, description="axle efficiency 1 - P_axle / P_in_axle (0 when no power enters but losses occur); with axle_losses = mesh (the default) the mesh efficiency alone, not the whole axle's: set axle_losses = full for churning, bearings and seals"),
+    Variable(name='eta_axle_cycle', vr=82, causality='output', variability='continuous', type='Real', enumeration=None, unit='', display_unit=None, start=None, min=None, max=None, description='RMS of eta_axle over the last completed window of n_avg_cycles mesh cycles (like eta_cycle); the mesh alone with axle_losses = mesh (the default)'),
     Variable(name='T_oil', vr=83, causality='output', variability='continuous', type='Real', enumeration=None, unit='K', display_unit='degC', start=None, min=None, max=None, description='oil temperature: the state of the sump (thermal_model = sump) or T_bath (fixed); friction, churning and bearings use it'),
     Variable(name='Q_dot_housing', vr=84, causality='output', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='heat flow from the housing to the air at this instant'),
     Variable(name='Q_housing', vr=85, causality='output', variability='continuous', type='Real', enumeration=None, unit='J', display_unit=None, start=None, min=None, max=None, description='heat given by the housing to the air since the start; with the sump C_sump (T_oil - T_oil0) = E_friction + E_churn + E_bearings + E_seals - Q_housing'),

@@ -1,6 +1,12 @@
 """Figures of one steady-state window of samples (docs/physics.md §9.2): efficiency (RMS, mean and
 energy-weighted), DTE peak-to-peak and minimum against the half backlash, contact loss, contact
-load, and the load-weighted friction coefficient, film thickness and Stribeck ratio."""
+load, and the load-weighted friction coefficient, film thickness and Stribeck ratio; with
+axle_losses = full, the axle's ledger (every part, the axle efficiency, the oil temperature).
+
+Drive and coast read alike: the working flank is the drive flank when the mesh force W_t is
+positive on the mean, the back (coast) flank when it is negative; contact is lost when the teeth
+are not on the working flank, and the W_t figures are loads on the working flank (drive: W_t,
+coast: -W_t), so a coast point is neither "apart 100 %" nor a negative peak load."""
 
 import numpy as np
 
@@ -9,7 +15,11 @@ from hypoid.fmu.values import TABLE
 PAIRS = tuple(k for k in range(1, 100) if f"pair[{k}].W" in TABLE.variables)  # the tooth pairs
 PAIR_FIELDS = ("W", "mu", "h_c", "lambda", "T_c", "g_V", "g_E", "R_e", "R_s")
 SCALARS = ("w_p", "DTE", "W_t", "P_loss", "P_in", "eta", "eta_cycle", "P_loss_cycle")
-REALS = SCALARS + tuple(f"pair[{k}].{f}" for k in PAIRS for f in PAIR_FIELDS)
+AXLE = ("P_axle", "P_in_axle", "P_churn", "P_bearings", "P_seals", "T_oil")  # the ledger's
+REALS = SCALARS + AXLE + tuple(f"pair[{k}].{f}" for k in PAIRS for f in PAIR_FIELDS)
+# the axle figures of a window (axle_losses = full)
+AXLE_FIGURES = ("P_axle_mean_W", "P_in_axle_mean_W", "eta_axle_energy", "P_mesh_mean_W",
+                "P_churn_mean_W", "P_bearings_mean_W", "P_seals_mean_W", "T_oil_mean_C")
 INTEGERS = ("contact", "n_impacts")
 for _name in REALS + INTEGERS:  # a renamed FMU variable fails here, not in a worker
     TABLE.variable(_name)
@@ -27,12 +37,35 @@ def load_weighted(s, field):
     return num / den if den > 0 else float("nan")
 
 
-def window_metrics(s, half_backlash):
-    """Steady-state figures of a window; `s` maps signal names to equal-length arrays."""
-    eta, dte, w_t = s["eta"], s["DTE"], s["W_t"]
+def working_flank(s):
+    """+1 (drive) or -1 (back flank, coast) from the sign of the mean mesh force."""
+    return 1 if float(np.mean(s["W_t"])) >= 0.0 else -1
+
+
+def axle_metrics(s):
+    """The axle's ledger over a window (axle_losses = full): mean powers by part, the axle's
+    energy efficiency 1 - sum P_axle / sum P_in_axle, the mean oil temperature."""
+    p_in = float(np.sum(s["P_in_axle"]))
+    return {"P_axle_mean_W": float(np.mean(s["P_axle"])),
+            "P_in_axle_mean_W": float(np.mean(s["P_in_axle"])),
+            "eta_axle_energy": 1.0 - float(np.sum(s["P_axle"])) / p_in if p_in > 0
+            else float("nan"),
+            "P_mesh_mean_W": float(np.mean(s["P_loss"])),
+            "P_churn_mean_W": float(np.mean(s["P_churn"])),
+            "P_bearings_mean_W": float(np.mean(s["P_bearings"])),
+            "P_seals_mean_W": float(np.mean(s["P_seals"])),
+            "T_oil_mean_C": float(np.mean(s["T_oil"])) - 273.15}
+
+
+def window_metrics(s, half_backlash, axle=False):
+    """Steady-state figures of a window; `s` maps signal names to equal-length arrays; `axle`:
+    the point runs the whole axle (axle_losses = full), its ledger is added."""
+    eta, dte = s["eta"], s["DTE"]
     p_in = float(np.sum(s["P_in"]))
     contact = s["contact"]
-    return {
+    flank = working_flank(s)
+    w_t = flank * s["W_t"]  # the load on the working flank
+    row = {
         "eta_rms": float(np.sqrt(np.mean(eta ** 2))),
         "eta_mean": float(np.mean(eta)),
         "eta_energy": 1.0 - float(np.sum(s["P_loss"])) / p_in if p_in > 0 else float("nan"),
@@ -46,7 +79,10 @@ def window_metrics(s, half_backlash):
         "DTE_min_um": float(np.min(dte) * 1e6),
         "DTE_max_um": float(np.max(dte) * 1e6),
         "DTE_min_minus_b_um": float((np.min(dte) - half_backlash) * 1e6),
-        "contact_loss_fraction": float(np.mean(contact != 1)),
+        "flank": "drive" if flank == 1 else "coast",
+        "contact_loss_fraction": float(np.mean(contact != flank)),
+        "apart_fraction": float(np.mean(contact == 0)),
+        "other_flank_fraction": float(np.mean(contact == -flank)),
         "back_contact_fraction": float(np.mean(contact == -1)),
         "impacts": int(s["n_impacts"][-1] - s["n_impacts"][0]),
         "W_t_mean_N": float(np.mean(w_t)),
@@ -58,6 +94,9 @@ def window_metrics(s, half_backlash):
         "lambda_mean": load_weighted(s, "lambda"),
         "T_c_max_C": _max_in_contact(s, "T_c") - 273.15,
     }
+    if axle:
+        row.update(axle_metrics(s))
+    return row
 
 
 def _max_in_contact(s, field):

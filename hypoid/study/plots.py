@@ -301,7 +301,7 @@ def quick_look(df, out, continuation=False):
         return []
     params = [c for c in ("gear_set", "lubricant_name", "friction_model", "mesh_model", "T_bath",
                           "T_s", "k_f") if c in df and df[c].nunique() > 1]
-    groups = df.groupby(params) if params else [((), df)]
+    groups = groups_of(df, params)
     fig, ax = plt.subplots(2, 1, figsize=(9, 8), sharex=True)
     for (key, g), c in zip(groups, plt.cm.tab10.colors * 10):
         key = key if isinstance(key, tuple) else (key,)
@@ -319,7 +319,43 @@ def quick_look(df, out, continuation=False):
     ax[1].set_ylabel("DTE peak-to-peak [µm]")
     ax[1].set_xlabel("pinion speed [rpm]")
     ax[1].grid(True, alpha=0.3)
-    return [_save(fig, out, "sweep")]
+    made = [_save(fig, out, "sweep")]
+    if "P_axle_mean_W" in df and df["P_axle_mean_W"].notna().any():
+        made.append(axle_quick_look(df, groups_of(df, params), out, continuation))
+    return made
+
+
+def groups_of(df, params):
+    return df.groupby(params) if params else [((), df)]
+
+
+AXLE_PARTS = {"P_mesh_mean_W": ("mesh", "-"), "P_churn_mean_W": ("churning", ":"),
+              "P_bearings_mean_W": ("bearings", "--"), "P_seals_mean_W": ("seals", "-.")}
+
+
+def axle_quick_look(df, groups, out, continuation=False):
+    """The axle's ledger vs speed (points with axle_losses = full): each part's mean loss, the
+    axle efficiency and the oil temperature, one colour per combination of the varied columns
+    (the `hypoid sweep` plot sweep_axle.png)."""
+    fig, ax = plt.subplots(3, 1, figsize=(9, 11), sharex=True)
+    for (key, g), c in zip(groups, plt.cm.tab10.colors * 10):
+        g = g[g["P_axle_mean_W"].notna()].sort_values("speed_rpm")
+        key = key if isinstance(key, tuple) else (key,)
+        label = ", ".join(str(v) for v in key) or "all"
+        ax[0].plot(g["speed_rpm"], g["P_axle_mean_W"], "-", lw=2, color=c,
+                   label=f"{label}: axle")
+        for col, (part, st) in AXLE_PARTS.items():
+            ax[0].plot(g["speed_rpm"], g[col], st, lw=1, color=c, label=f"{label}: {part}")
+        ax[1].plot(g["speed_rpm"], 100 * g["eta_axle_energy"], "-o", ms=3, color=c, label=label)
+        ax[2].plot(g["speed_rpm"], g["T_oil_mean_C"], "-o", ms=3, color=c, label=label)
+    ax[0].set_ylabel("mean loss [W]")
+    ax[1].set_ylabel("axle efficiency [%]")
+    ax[2].set_ylabel("oil temperature [°C]")
+    ax[2].set_xlabel("pinion speed [rpm]")
+    for a in ax:
+        a.grid(True, alpha=0.3)
+        a.legend(fontsize=7)
+    return _save(fig, out, "sweep_axle")
 
 
 def axle_loss_map(lm, out, name="axle_loss_map"):

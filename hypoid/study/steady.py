@@ -131,9 +131,14 @@ def model_constants(inst):
     return row
 
 
+def whole_axle(inst):
+    """True when the instance runs the axle's whole ledger (axle_losses = full)."""
+    return inst.get("axle_losses") == inst.enum_value("axle_losses", "full")
+
+
 def window_row(inst, sampler, window, w_set):
     """The metrics of a window plus counters and constants."""
-    row = metrics.window_metrics(window, half_backlash(inst))
+    row = metrics.window_metrics(window, half_backlash(inst), axle=whole_axle(inst))
     row["speed_set_rpm"] = w_set / RPM
     row["sim_time_s"] = sampler.t
     row["solver_steps"] = inst.get("solver_steps")
