@@ -3,16 +3,23 @@ the map level (the runner's default), the fast level and the full level (or --le
 wall and CPU times,
 real-time factors and the axle's cycle energy loss and oil-temperature rise, and each level's
 error against the full one.
-Not a timed test: it writes bench/drive_cycle.json and prints a table.
+Not a timed test: it writes the data of the record docs/records/drive-cycle
+(drive-cycle-levels.json) and its page, and prints a table.
 
   .venv/bin/python bench/drive_cycle.py                    # WLTC 3b, three levels (full: slow)
-  .venv/bin/python bench/drive_cycle.py --until 589        # only its low phase
-  .venv/bin/python bench/drive_cycle.py --levels map fast"""
+  .venv/bin/python bench/drive_cycle.py --until 589 --json /tmp/x.json   # only its low phase
+  .venv/bin/python bench/drive_cycle.py --summary DIR      # record `hypoid drive-cycle`'s DIR
+
+--summary DIR records the output of `hypoid drive-cycle --level fast --out ... --name ...` (its
+summary.json, cold and warm, and its figure) as the record's other part (drive-cycle.json,
+docs/figures/drive_cycle_wltc3.png)."""
 
 import argparse
+import datetime
 import json
 import pathlib
 import resource
+import shutil
 import sys
 import time
 
@@ -21,6 +28,20 @@ sys.path.insert(0, str(ROOT))
 
 from hypoid.drivecycle import cycles, levels, summary  # noqa: E402
 from hypoid.drivecycle import run as runner  # noqa: E402
+from hypoid.records.docblocks import commit  # noqa: E402
+from hypoid.records.registry import FOLDER, RECORDS  # noqa: E402
+
+LEVELS_DATA, RUNS_DATA = (FOLDER / name for name in RECORDS["drive-cycle"].data)
+
+
+def record_summary(folder):
+    """`hypoid drive-cycle`'s output folder as the record's runs (and its figure)."""
+    data = json.loads((folder / "summary.json").read_text())
+    meta = data["meta"]
+    data.update(command=f"hypoid drive-cycle --cycle {meta['cycle']} --level {meta['level']}",
+                commit=commit(ROOT), recorded=datetime.date.today().isoformat())
+    RUNS_DATA.write_text(json.dumps(data, indent=2) + "\n")
+    shutil.copyfile(folder / "drive_cycle.png", ROOT / "docs" / "figures" / "drive_cycle_wltc3.png")
 
 
 def cpu_seconds():
@@ -53,8 +74,13 @@ def main():
     ap.add_argument("--t-oil0", type=float, default=20.0)
     ap.add_argument("--fmu", default=str(ROOT / "build" / "HypoidGearPair.fmu"))
     ap.add_argument("--vehicle-fmu", default=str(runner.DEFAULT_VEHICLE_FMU))
-    ap.add_argument("--json", default=str(ROOT / "bench" / "drive_cycle.json"))
+    ap.add_argument("--json", default=str(LEVELS_DATA), help="where the levels' results go")
+    ap.add_argument("--summary", type=pathlib.Path, help="record this `hypoid drive-cycle` output")
     args = ap.parse_args()
+    if args.summary:
+        record_summary(args.summary)
+        (FOLDER / "drive-cycle.md").write_text(RECORDS["drive-cycle"].write())
+        return
     cycle = cycles.load_cycle(args.cycle)
     if args.until:
         keep = cycle.t <= args.until
@@ -72,6 +98,8 @@ def main():
            "machine": "2 cores shared with other jobs (wall time depends on the load; see cpu_s)",
            "results": results}
     pathlib.Path(args.json).write_text(json.dumps(out, indent=2) + "\n")
+    if pathlib.Path(args.json) == LEVELS_DATA:
+        (FOLDER / "drive-cycle.md").write_text(RECORDS["drive-cycle"].write())
     print(f"{cycle.name} ({out['duration_s']:.0f} s), cold start {args.t_oil0:g} degC")
     print(f"{'level':<6} {'wall s':>8} {'cpu s':>8} {'RTF(cpu)':>9} {'loss kJ':>9} "
           f"{'eta %':>7} {'dT_oil K':>9}")

@@ -2,7 +2,7 @@
 time of whole runs into fresh folders (medians over --runs), and where the time goes: the local
 cluster's start, the tasks (steady points, continuation sweeps, the axle's loss map; their CPU from
 the result tables), the report, and the costliest points and windows. Not a timed test; it prints
-a table and writes bench/study_time.json (--json).
+a table and writes the record docs/records/study-time (its data study-time.json, or --json).
 
   .venv/bin/python bench/study_time.py                     # 3 runs of the default study
   .venv/bin/python bench/study_time.py --runs 1 --study ci
@@ -21,6 +21,8 @@ import tempfile
 import time
 
 import pandas as pd
+
+from hypoid.records.registry import FOLDER, RECORDS
 
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 
@@ -77,7 +79,7 @@ def main():
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--workers", type=int, default=2)
     ap.add_argument("--keep", type=pathlib.Path, help="folder for the runs' results (kept)")
-    ap.add_argument("--json", type=pathlib.Path, default=ROOT / "bench/study_time.json")
+    ap.add_argument("--json", type=pathlib.Path, default=FOLDER / "study-time.json")
     args = ap.parse_args()
     root = args.keep or pathlib.Path(tempfile.mkdtemp(prefix="study-time-"))
     runs = []
@@ -91,6 +93,8 @@ def main():
     report = {"study": args.study, "fmu": args.fmu, "runs": args.runs, "workers": args.workers,
               "finished": time.strftime("%Y-%m-%d %H:%M:%S"), "median": med, "each": runs}
     args.json.write_text(json.dumps(report, indent=2) + "\n")
+    if args.json == FOLDER / "study-time.json":
+        (FOLDER / "study-time.md").write_text(RECORDS["study-time"].write())
     print(f"\n{args.study} study, median of {args.runs}: {med['wall_s']:.1f} s wall, "
           f"{med['cpu_s']:.1f} s CPU (all processes)")
     for key in ("cluster_start_s", "tasks_wall_s", "report_s", "points_cpu_s", "lossmap_cpu_s"):

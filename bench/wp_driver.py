@@ -38,14 +38,6 @@ FINE_PER_CYCLE = 64  # samples per mesh cycle of the fine runs (CVODE)
 # ------------------------------------------------------------------ fidelity levels and solvers
 
 LEVELS = dict(_LEVELS)  # a copy: the benchmark adds diagnostic levels
-LEVEL_TITLES = {
-    "full": "varying + ehl_thermal, exact backlash (full)",
-    "smoothed": "varying + ehl_thermal, smoothed backlash (2 µm)",
-    "isothermal": "varying + ehl_isothermal, exact backlash",
-    "mean": "mean mesh + ehl_thermal",
-    "rigid": "rigid mesh + ehl_thermal",
-    "map": "rigid mesh + efficiency map",
-}
 ATOL_PER_RTOL = 1e-4  # atol [m of DTE] = 1e-4 m * rtol: rtol relative to a DTE of ~100 um
 
 

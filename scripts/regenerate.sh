@@ -2,21 +2,21 @@
 # Regenerates, in one command, the data that depend on the full model's default results, after a
 # deliberate change of the defaults (friction, tooth data, contact, kinematics): the six built-in
 # efficiency maps (resources/maps), the FMU that packs them, the regression reference (the values
-# that moved are printed first: log the reason in tests/regression/README.md), the README's
-# per-level table (docs/level-table.json) and the axle's loss-map figure (its table is printed for
-# docs/axle.md). Niced; the maps take about 3 min each with two workers.
+# that moved are printed first: log the reason in docs/decisions.md), and the records
+# that depend on them (docs/records/: the level table and the axle's loss map; `hypoid records
+# --list` names the others, each remade by `hypoid records --measure NAME`). Niced; the maps
+# take about 3 min each with two workers.
 #
 #   scripts/regenerate.sh                  # all of it
 #   scripts/regenerate.sh maps regress     # only the named parts (maps, regress, levels, lossmap)
 #
-# The printed tables go to build/regenerate/; what the docs quote from them is updated by hand.
+# The regression's printed tables go to build/regenerate/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 parts=("$@")
 [ ${#parts[@]} -gt 0 ] || parts=(maps regress levels lossmap)
 out=build/regenerate
 mkdir -p "$out"
-py=.venv/bin/python
 run() { echo "regenerate: $*" >&2; nice -n 10 "$@"; }
 
 run cmake --build build -j2 >/dev/null
@@ -29,12 +29,12 @@ for part in "${parts[@]}"; do
       run .venv/bin/hypoid regress >"$out/regress-before.txt" || true # exit 1: values moved
       run .venv/bin/hypoid regress --update >"$out/regress-update.txt" ;;
     levels)
-      run "$py" bench/level_table.py >"$out/level-table.txt" ;;
+      run .venv/bin/hypoid records --measure level-table ;;
     lossmap)
-      run "$py" tools/axle_loss_map.py >"$out/axle-loss-map.md" ;;
+      run .venv/bin/hypoid records --measure axle-loss-map ;;
     *)
       echo "regenerate: unknown part '$part' (maps, regress, levels, lossmap)" >&2
       exit 2 ;;
   esac
 done
-echo "regenerate: done; tables in $out/" >&2
+echo "regenerate: done; the regression tables in $out/, the records in docs/records/" >&2

@@ -292,7 +292,7 @@ static void dynamics_params(hg_setup *s, const hg_vars *v)
 }
 
 /* The integrator of solver = auto, per fidelity level, chosen from the work-precision
- * measurements (docs/work-precision.md): the explicit Runge-Kutta pair for the compliant meshes,
+ * measurements (docs/records/work-precision.md): the explicit Runge-Kutta pair for the compliant meshes,
  * whose steps the 1.7 kHz input-shaft mode bounds whatever the tolerance (BDF takes as many,
  * each with a Newton iteration), BDF for the rigid one, whose long steps the explicit pair
  * cannot take (its stability bound is that same mode). */

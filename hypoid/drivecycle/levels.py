@@ -1,7 +1,7 @@
 """Which fidelity level of the gear FMU a drive cycle runs (docs/axle.md, "Which level a --set
-reaches"; docs/work-precision.md, "Which level and settings for which use"): the levels, the
-default for the oil and air temperatures and the data files given, and whether a --set parameter
-reaches the result at a level."""
+reaches"; the record docs/records/work-precision.md, "Which level and settings for which use"):
+the levels, the default for the oil and air temperatures and the data files given, and whether a
+--set parameter reaches the result at a level."""
 
 from hypoid.errors import UsageError
 from hypoid.fmu import levels as fmu_levels
@@ -74,10 +74,10 @@ def unreached(level, extra):
 
 
 def default_level(T_amb, starts, extra):
-    """The drive cycle's level when none is asked for (docs/work-precision.md): map while the oil
-    starts and the air stays in the map's range and a built-in map exists (none for a gear-set
-    or lubricant file of one's own, nor for the tooth data the maps were not made with), or when a
-    map of one's own is given; else fast; and the cheapest level that every --set parameter
+    """The drive cycle's level when none is asked for (docs/records/work-precision.md): map while
+    the oil starts and the air stays in the map's range and a built-in map exists (none for a
+    gear-set or lubricant file of one's own, nor for the tooth data the maps were not made with),
+    or when a map of one's own is given; else fast; and the cheapest level that every --set parameter
     reaches (fast for friction data, full for the compliant mesh's)."""
     in_range = min(T_amb, *starts) >= MAP_T_MIN and builtin_map_fits(extra)
     first = "map" if in_range or "efficiency_map_file" in extra else "fast"

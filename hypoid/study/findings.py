@@ -316,7 +316,7 @@ def _row_numbers(row, trace_dir):
 
 
 def variant_numbers(pts, cont, trace_dir=None, **where):
-    """The numbers docs/paper-findings.md quotes for gear set 1 at the reference inertias or a
+    """The numbers docs/records/paper-findings.md quotes for gear set 1 at the reference inertias or a
     what-if: resonance speeds; per torque the strongest DTE peak, the DTE, separation and dip at
     each resonance, and the continuation's branches; the traced points near and away from
     resonance (Fig. 10)."""
@@ -408,7 +408,7 @@ def sensitivity_numbers(pts, extra, torque=100.0):
 
 
 def details(pts, cont, trace_dir=None, extra=()):
-    """Every detail number of docs/paper-findings.md, as plain data (JSON-able); `extra`: the
+    """Every detail number of docs/records/paper-findings.md, as plain data (JSON-able); `extra`: the
     study's sensitivity variants (label, params)."""
     pts, cont = prepare(pts), prepare(cont)
     return {"reference": variant_numbers(pts, cont, trace_dir),

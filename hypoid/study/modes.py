@@ -1,4 +1,4 @@
-"""Modal analysis of the 4-DoF torsional model (docs/physics.md §8.4) for docs/paper-findings.md:
+"""Modal analysis of the 4-DoF torsional model (docs/physics.md §8.4) for docs/records/paper-findings.md:
 natural frequencies, mode shapes, the resonance speeds n = 60 f / N_p, and the dynamic
 transmission error's response to the unloaded transmission error e_0 at each mode, for any set
 of modal damping ratios. The same linearisation as fmu-src/model/modal.c (checked against the
@@ -241,7 +241,7 @@ def findings_section(k_m=SET1["k_m"], R_p=SET1["R_p"], fmu_dampers=None):
         f"(I_p = {I_P_GEOMETRY} kg m^2; {_estimate_text()}) mode 3 moves to "
         f"{rpm(geo, wg[2]):.0f} rpm and mode 2's "
         f"gain is {log:.2f}-{hig:.1f} times mode 3's (the what-if section below runs it; "
-        "`python -m hypoid.study.modes` prints these tables; docs/paper-findings.md).", "",
+        "`python -m hypoid.study.modes` prints these tables; docs/records/paper-findings.md).", "",
         inertia_reports(k_m, R_p, fmu_dampers), ""])
 
 

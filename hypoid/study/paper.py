@@ -34,7 +34,7 @@ def _rng(a, b, s):
 @dataclass
 class WhatIf:
     """A variant of gear set 1 (OS265962, the paper's EHL) on its own grid and continuation
-    sweeps, reported beside the reference (docs/paper-findings.md, 'What-if')."""
+    sweeps, reported beside the reference (docs/records/paper-findings.md, 'What-if')."""
 
     label: str
     params: dict  # what the variant changes

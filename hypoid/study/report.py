@@ -91,7 +91,7 @@ def _header(pts_all, cont_all, info, find, modal):
             "Tables: `points.csv` / `points.parquet` (steady points), `continuation.csv` / "
             "`continuation.parquet` (up/down sweeps), `findings.csv`, `modal.csv`; signals of "
             "the traced points in `traces/`. Interpretation and caveats: "
-            "`docs/paper-findings.md`.", "",
+            "`docs/records/paper-findings.md`.", "",
             "## Paper findings in this FMU", "",
             md_table(find[["id", "figure", "at", "paper", "this FMU", "verdict"]], index=False),
             "", "F3/F4/F6 are evaluated at both mesh resonances of gear set 1: mode 2 (`f2`, the "

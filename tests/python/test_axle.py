@@ -1,4 +1,4 @@
-"""The axle's loss ledger, its sump and the power-flow efficiencies (issue 9, docs/axle.md).
+"""The axle's loss ledger, its sump and the power-flow efficiencies (docs/axle.md).
 
 Independent values: the published loss formulas worked out here in Python at the FMU's
 operating point (Changenet & Velex churning, Palmgren bearing moments as in ISO/TR 14179-2,

@@ -1,4 +1,4 @@
-"""The command line as a new user meets it (issue 13 items 2, 3, 4 and 9): one parser and one
+"""The command line as a new user meets it: one parser and one
 error path for every `hypoid` tool (hypoid.cli.args, hypoid.cli), enumeration items by name,
 `speed_rpm`, and `hypoid run`'s output folder, plots and half backlash."""
 

@@ -278,8 +278,7 @@ def test_libcosim_matches_fmpy_master(run, h):
         # controller's, the last bits of libcosim's step sizes change them at the tolerance's
         # level (rtol 1e-10), and the tip-out's impacts multiply that (w_p at 0.5 ms, measured: 2.9e-10
         # one-series, 1.3e-8 loaded, made at the backlash crossing at 1.29 s; at 0.1 ms ~5e-12).
-        # How much depends on the path: on the loaded default after the law's per-node tables
-        # (5bc64d0) w_p 3.8e-8 and eta 5.2e-8 at 1.84 s, 3e-7 of the coupling error each
+        # How much depends on the path: on the loaded default w_p 3.8e-8 and eta 5.2e-8 at 1.84 s, 3e-7 of the coupling error each
         assert d["rel"] < 2e-7, name
         assert d["rel"] < 1e-4 * coupling[name]["rel"], name
     e_lc, e_own = cd.energy_balance(lc), cd.energy_balance(own)

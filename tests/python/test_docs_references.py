@@ -160,8 +160,8 @@ def test_named_documents_exist():
             if not (ROOT / "docs" / m.group(1)).is_file():
                 bad.append(f"{path}:{line_of(text, m.start())}: docs/{m.group(1)}")
         if path.startswith("docs/"):
-            for m in re.finditer(r"\]\(([\w.-]+\.md)(?:#[^)]*)?\)", text):
-                if not (ROOT / "docs" / m.group(1)).is_file():
+            for m in re.finditer(r"\]\(([\w./-]+\.md)(?:#[^)]*)?\)", text):
+                if not ((ROOT / path).parent / m.group(1)).is_file():
                     bad.append(f"{path}:{line_of(text, m.start())}: ({m.group(1)})")
     assert not bad, "documents that do not exist:\n" + "\n".join(bad)
 

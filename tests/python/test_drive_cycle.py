@@ -276,7 +276,7 @@ def test_the_map_level_gives_the_fast_levels_axle_loss():
 
 
 def test_the_default_level_is_the_map_level_within_the_maps_range():
-    """hypoid drive-cycle's level when none is given (docs/work-precision.md, vehicle energy):
+    """hypoid drive-cycle's level when none is given (docs/records/work-precision.md, vehicle energy):
     the map level while the air and every start temperature are at or above the built-in maps'
     lowest temperature, read here from a shipped map, else the fast level (the sump could cool
     onto the map's held edge), and the fast level for a gear set or lubricant of one's own,
@@ -366,7 +366,7 @@ def test_friction_data_set_at_the_default_level_reaches_the_mesh_loss(tmp_path, 
 def test_the_default_level_gives_the_full_levels_axle_loss():
     """The drive cycle's default level (map) against the full level (the paper's model) over the
     first 100 s of WLTC class 3 from a cold start, launches included: the axle's loss within 1 %
-    (issue 9's accuracy target; measured +0.84 % here, the launches' transients being the map's
+    (the drive cycle's accuracy target; measured +0.84 % here, the launches' transients being the map's
     worst part, +0.5 % over the whole cycle: docs/axle.md), the mesh part within 3 % (+2.1 %),
     the others within 0.2 %."""
     check_axle_loss(first_100_s("map"), first_100_s("full"), 0.01, 0.03, 0.002)

@@ -1,4 +1,4 @@
-"""`hypoid effmap` for one's own gear set and lubricant (issue 13 item 5): grid options and
+"""`hypoid effmap` for one's own gear set and lubricant: grid options and
 --set, maps that record what they were made from, and the FMU refusing a map made for another
 gear set or lubricant (naming both)."""
 

@@ -1,5 +1,5 @@
-"""examples/: the quick-start notebook and its plain-script twin run to the end (issue 13
-item 11), so that they never rot. Both execute the same five experiments; the checks read the
+"""examples/: the quick-start notebook and its plain-script twin run to the end, so that
+they never rot. Both execute the same five experiments; the checks read the
 physics they print (the tip-out ends on the coast flank, efficiencies are percentages of a
 lossy gear)."""
 

@@ -1,4 +1,4 @@
-"""The FMU at the extremes of its inputs, parameters and settings (issue 5): pinion speed 10 to
+"""The FMU at the extremes of its inputs, parameters and settings: pinion speed 10 to
 10 000 rpm, input torque 0 (rattle inside the backlash), negative (coast) and up to 1000 N.m,
 torque reversals in one step, bath -30 to 150 degC, communication steps 1 us to 0.5 s, backlash 0
 and 300 um, for every fidelity level and solver.
@@ -117,9 +117,8 @@ EXPECTED_ERRORS = {
 
 # Known bugs (reported, not fixed here): (condition regex, level regex, solver regex) -> reason.
 KNOWN_BUGS = {  # (condition, level, solver) -> what goes wrong (the whole matrix only).
-    # Passes since (at least) main f629043, found by the whole matrix on 0af1bcd (XPASS strict):
-    # Newmark's Newton iteration at the 10 000 rpm reversal, 0.5 s steps, isothermal level; the
-    # change that made it converge was not bisected (candidates: the friction defaults 98b30cb).
+    # Passes now (docs/decisions.md, "The extremes matrix with every solver"): Newmark's Newton
+    # iteration at the 10 000 rpm reversal, 0.5 s steps, isothermal level.
     # Fixed: the 10 rpm torque reversal with arkode_erk on the compliant levels missed the energy
     # bound by 3-4x: the friction table built at the standstill before the reversal extrapolated
     # ln mu linearly to the speeds of the reversal step (mu ~ 1e5, stiff); its drift terms are

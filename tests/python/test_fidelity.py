@@ -110,7 +110,7 @@ def test_friction_table_leaves_the_standstill_to_the_direct_solve(fmu_path):
     """Torque-driven from 10 rpm with balanced torques, friction brakes the pair to standstill
     in ~0.3 s. Near standstill ln mu is far from linear in the speed; a table used down to rest
     left the speed 29 % off the direct solve near rest (0.0104 against 0.0147 rad/s at 0.2 s with
-    the tooth data of 1c2bb63, whose thinner film braked faster). Below 1 rad/s the direct solve
+    an earlier surrogate's tooth data, whose thinner film braked faster). Below 1 rad/s the direct solve
     runs, so the coast-down follows it. With the paper's friction, which brakes slowly enough to
     compare the coast-down (the limiting-shear defaults stop the pair sooner), and its tooth data
     (preset = paper)."""

@@ -1,41 +1,72 @@
-"""Documented numbers that are written by a script from a recorded run, checked against that
-record: docs/paper-findings.md (tools/paper_findings.py, docs/paper-findings.json) and
-physics.md §10.8's tables of what the loaded tooth data do at 2000 rpm (tools/tooth_figures.py,
-docs/figures/km_effect.json), of the force laws against the reference model
-(tools/mesh_law_reference.py, docs/figures/mesh_law_reference.json) and of μ, P_loss and DTE
-with the paper's and the loaded tooth data (tools/friction_figures.py --block tooth-data,
-docs/figures/friction_tooth-data.json). A changed figure in the page makes each check fail."""
+"""The records (docs/records/): every page is what `hypoid records` writes from its data, a changed
+figure in a page makes the check fail, every record is in the docs index, and the records say
+what the text claims of them (the recorded verdicts, the loaded tooth data's modal speeds, the
+force laws against the reference model)."""
 
 import json
 import pathlib
-import subprocess
-import sys
+import shutil
+
+import pytest
+
+from hypoid.records import cli, docblocks
+from hypoid.records.registry import FOLDER, RECORDS
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 
-def _fails_on(script, text, old, new, tmp_path, name):
-    stale = tmp_path / name
-    stale.write_text(text.replace(old, new, 1))
-    return subprocess.run(script + ["--file", str(stale)], capture_output=True).returncode == 1
+def data(name, k=0):
+    return json.loads((FOLDER / RECORDS[name].data[k]).read_text())
 
 
-def test_page_numbers_are_the_recorded_study(tmp_path):
-    """docs/paper-findings.md's generated blocks are written by tools/paper_findings.py from the
-    recorded study (docs/paper-findings.json); a changed figure makes the check fail."""
-    script = [sys.executable, str(ROOT / "tools" / "paper_findings.py"), "--check"]
-    subprocess.run(script, check=True)
-    data = json.loads((ROOT / "docs" / "paper-findings.json").read_text())
-    text = (ROOT / "docs" / "paper-findings.md").read_text()
-    row = data["default"]["findings"][0]["this FMU"]
-    assert row in text
-    assert _fails_on(script, text, row, row + "1", tmp_path, "paper-findings.md")
+def test_every_page_is_its_data():
+    assert cli.write_all(list(RECORDS), check=True) == 0
 
 
-def test_page_states_the_recorded_verdicts():
-    """The recorded default study gives the verdicts this page discusses: the paper's 2000 rpm
-    findings not reproduced with Table 3, the what-if's mode-3 dip reproduced."""
-    rec = json.loads((ROOT / "docs" / "paper-findings.json").read_text())["default"]
+@pytest.fixture
+def copy(tmp_path):
+    """The records and the index in a scratch folder."""
+    folder = tmp_path / "records"
+    shutil.copytree(FOLDER, folder)
+    index = tmp_path / "README.md"
+    shutil.copyfile(cli.INDEX, index)
+    return folder, index
+
+
+@pytest.mark.parametrize("name", list(RECORDS))
+def test_a_changed_figure_fails_the_check(copy, name):
+    """A digit of the first table row, changed, makes the page stale; writing restores it."""
+    folder, index = copy
+    page = folder / RECORDS[name].page
+    text = page.read_text()
+    lines = text.splitlines()
+    row = next(line for prev, line in zip(lines, lines[1:]) if prev.startswith("|---")
+               and any(c.isdigit() for c in line))
+    digit = next(c for c in row if c.isdigit())
+    page.write_text(text.replace(row, row.replace(digit, "1" if digit == "9" else "9", 1), 1))
+    assert cli.write_all([name], check=True, folder=folder, index=index) == 1
+    assert cli.write_all([name], check=False, folder=folder, index=index) == 0
+    assert page.read_text() == text
+
+
+def test_the_index_lists_every_record(copy):
+    folder, index = copy
+    text = cli.INDEX.read_text()
+    for r in RECORDS.values():
+        assert f"(records/{r.page})" in text
+    index.write_text(text.replace(f"(records/{RECORDS['level-table'].page})", "(x.md)"))
+    assert cli.write_all([], check=True, folder=folder, index=index) == 1
+
+
+def test_markers_of_the_mixed_page():
+    found, problems = docblocks.markers((FOLDER / "paper-findings.md").read_text())
+    assert not problems and len(found) > 10
+
+
+def test_records_state_the_recorded_verdicts():
+    """The recorded default study gives the verdicts the findings page discusses: the paper's
+    2000 rpm findings not reproduced with Table 3, the what-if's mode-3 dip reproduced."""
+    rec = data("paper-findings")["default"]
     got = {f["id"]: f["verdict"] for f in rec["findings"]}
     assert got["F3-f2"] == "reproduced" and got["F3-f3"] == "not reproduced"
     assert got["F3-f3-I_p=0.001"] == "reproduced"
@@ -47,48 +78,20 @@ def test_page_states_the_recorded_verdicts():
                for d in wif["torques"].values())  # what-if: mode 3's
 
 
-def test_physics_km_effect_table_is_the_recorded_run(tmp_path):
-    script = [sys.executable, str(ROOT / "tools" / "tooth_figures.py"), "--check"]
-    subprocess.run(script, check=True)
-    text = (ROOT / "docs" / "physics.md").read_text()
-    row = next(line for line in text.splitlines() if line.startswith("| 1 | 50 | "))
-    assert _fails_on(script, text, row, row.replace(" | ", " | 9", 1), tmp_path, "physics.md")
-
-
 def test_loaded_modal_speeds_are_the_fmus():
-    """The page's claim for the loaded tooth data: hypoid.study.modes at the drive flank's k_m(T),
-    R_p(T) interpolated between the file's levels gives the mode-3 speed the FMU itself computed
-    in the recorded sweep (its calculated n(f_3)), to the rpm."""
-    rec = json.loads((ROOT / "docs" / "paper-findings.json").read_text())["loaded"]
+    """The findings page's claim for the loaded tooth data: hypoid.study.modes at the drive
+    flank's k_m(T), R_p(T) gives the mode-3 speed the FMU itself computed in the recorded sweep
+    (its calculated n(f_3)), to the rpm."""
+    rec = data("paper-findings")["loaded"]
     for t, m in rec["modal"].items():
         assert abs(m["f3"] - rec["sweep"][t]["fmu_f3_rpm"]) < 1.0, t
 
 
-def test_physics_mesh_law_comparison_is_the_recorded_run(tmp_path):
-    """physics.md §10.8's comparison of the force laws against the reference model is written by
-    tools/mesh_law_reference.py from docs/figures/mesh_law_reference.json; and the record says
-    what the text claims: the FMU within 5 % of the reference over the sweep, the filtered secant
-    not."""
-    script = [sys.executable, str(ROOT / "tools" / "mesh_law_reference.py"), "check",
-              "--doc-file"]
-    subprocess.run(script[:-1], check=True)
-    text = (ROOT / "docs" / "physics.md").read_text()
-    row = next(line for line in text.splitlines() if line.startswith("| 2000 rpm | "))
-    stale = tmp_path / "physics.md"
-    stale.write_text(text.replace(row, row.replace(" µm", "1 µm", 1), 1))
-    assert subprocess.run(script + [str(stale)], capture_output=True).returncode == 1
-    rec = json.loads((ROOT / "docs" / "figures" / "mesh_law_reference.json").read_text())
-    for d in rec["torques"].values():
+def test_mesh_law_record_says_what_physics_claims():
+    """docs/physics.md §10.8: the FMU within 5 % of the reference model over the sweep, the
+    filtered secant not."""
+    for d in data("mesh-law")["torques"].values():
         ref = [r["pp_um"] for r in d["runs"]["reference"]]
         dev = {k: max(abs(r["pp_um"] / q - 1.0) for r, q in zip(d["runs"][k], ref))
                for k in ("fmu", "secant")}
         assert dev["fmu"] < 0.05 and dev["secant"] > 0.5, dev
-
-
-def test_physics_tooth_data_table_is_the_recorded_run(tmp_path):
-    script = [sys.executable, str(ROOT / "tools" / "friction_figures.py"), "--block",
-              "tooth-data", "--check"]
-    subprocess.run(script, check=True)
-    text = (ROOT / "docs" / "physics.md").read_text()
-    row = next(line for line in text.splitlines() if line.startswith("| OS265962 | 2000 | 100 |"))
-    assert _fails_on(script, text, row, row.replace(" | ", " | 9", 1), tmp_path, "physics.md")

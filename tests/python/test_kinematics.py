@@ -1,4 +1,4 @@
-"""Kinematics of the tooth data (issue 10 item 1): friction torques and power from the material
+"""Kinematics of the tooth data: friction torques and power from the material
 flank velocities (r x F), entrainment from the velocities relative to the moving contact point.
 A synthetic gear set with constant series whose contact point moves: torques, sliding and
 entrainment known in closed form. And the TCA import's two velocity sets."""
@@ -252,8 +252,9 @@ def test_the_pinion_rolls_across_the_line_of_contact_at_the_helical_speed(monkey
     action (perpendicular to the cone element and to the transverse profile n × e_cone) with the
     flank's normal velocity; the pinion's material relative to it is V_1 sin α_t long and lies
     across the line of contact, and the surrogate's rolling across the line agrees with it
-    whatever the travel along the face (which runs along the line). The surrogate of 9ba6806
-    (travel lengthwise, no profile component) rolled at about half of it with no travel."""
+    whatever the travel along the face (which runs along the line). A surrogate whose contact
+    travelled lengthwise, with no profile component, rolled at about half of it with no travel
+    (docs/decisions.md, "Kinematics")."""
     from functools import cached_property
     from hypoid.tca import surrogate as sur
 

@@ -161,7 +161,7 @@ def test_main_reports_errors(tmp_path, capsys):
     assert "--kv40" in err and "abc" in err and len(err.splitlines()) == 1
 
 
-# ------------------------------------------------------------------ a bare data sheet (issue 13.6)
+# ------------------------------------------------------------------ a bare data sheet
 SHEET = ["--name", "Sheet oil", "--kv40", "100", "--kv100", "15", "--rho15", "870"]
 
 

@@ -1,4 +1,4 @@
-"""Contact of the mesh (issue 10 item 2): separated teeth carry no load and no friction, the mesh
+"""Contact of the mesh: separated teeth carry no load and no friction, the mesh
 damper does not act between them, and the coast flank is loaded only when the back flank touches.
 Independent checks: the force the model reports against the flank states it reports, and the
 energy audit."""

@@ -59,8 +59,8 @@ def test_static_transmission_error_is_the_contacts(fmu_path, contact_100):
 # computes them for the shipped file at that torque: 3.153, 11127, 16.15 at 100 N·m; 3.371, 9622.6,
 # 15.74 at 50 N·m) over 0.2-0.3 s, frictionless, torque at both ends: `python
 # tools/mesh_law_reference.py point --law reference --speed RPM --torque T --dampers c_t1 c_m
-# c_t2` (RK4, 10 µs; the shipped files with the tip relief of main b4b9a7a). The secant law of the
-# files before, filtered (the FMU of main 86bfbf5), gives 16.3, 14.2, 9.9, 4.6 µm at 100 N·m and
+# c_t2` (RK4, 10 µs; the shipped files with their tip relief). The former law, the files' secant
+# filtered, gives 16.3, 14.2, 9.9, 4.6 µm at 100 N·m and
 # 30.8, 6.9 µm at 50 N·m: mode 3 at 2200 rpm and mode 2 at 1300 rpm instead of 2500 and 1400.
 REFERENCE = [  # (T_s [N·m], speed [rpm], DTE p-p [µm], relative tolerance)
     (100.0, 2000.0, 5.866, 0.04),

@@ -1,4 +1,4 @@
-"""hypoid.study.modes (the modal analysis behind docs/paper-findings.md) against the FMU's own modal
+"""hypoid.study.modes (the modal analysis behind docs/records/paper-findings.md) against the FMU's own modal
 analysis (fmu-src/model/modal.c: f_2..f_4 and the dampers) and against an independent rigid-mesh
 reduction, and the two findings the note rests on."""
 
@@ -98,7 +98,7 @@ def _det_roots(s, f_hi=6000.0, n=60000):
 def test_frequencies_by_hand_determinant(I_p, rpm_stated):
     """The three elastic frequencies at Table 3's and at the geometric pinion inertia are the
     zeros of the hand-written characteristic determinant, and give the resonance speeds stated
-    in docs/paper-findings.md (what-if: 1413 and 2118 rpm)."""
+    in docs/records/paper-findings.md (what-if: 1413 and 2118 rpm)."""
     s = modes.system(I_p=I_p)
     f = _det_roots(s)
     w, _ = modes.modes(s)

@@ -1,7 +1,7 @@
 """The paper's findings (Paouris et al. 2016, §3) checked on the FMU with a reduced grid, using
 the same measures as the study report (hypoid.study.findings). Where the surrogate tooth contact data
 cannot reproduce a finding at the paper's speed, the test is a strict xfail that documents it
-(docs/paper-findings.md): it turns into a failure the day the FMU does reproduce it.
+(docs/records/paper-findings.md): it turns into a failure the day the FMU does reproduce it.
 
 The default study itself (about 12 s on two idle cores) runs too, and every verdict of its report
 is checked against the claims and against the recorded study the findings page is written from.
@@ -49,7 +49,7 @@ def tables(fmu_path, tmp_path_factory):
 
 def test_resonance_speeds_of_gear_set_1(tables):
     """Mode 3 is calibrated to the paper's 2000 rpm (docs/physics.md §8.4); mode 2 then sits near
-    1200 rpm. If this moves, docs/paper-findings.md and the speeds above need revisiting."""
+    1200 rpm. If this moves, docs/records/paper-findings.md and the speeds above need revisiting."""
     res = fd.resonances(tables[0], 1)
     assert res["f3"] == pytest.approx(2000.0, rel=0.02)
     assert res["f2"] == pytest.approx(1204.0, rel=0.03)
@@ -90,7 +90,7 @@ def test_gear_set_2_more_efficient_than_gear_set_3_away_from_resonance(tables):
 
 @pytest.mark.xfail(strict=True, reason="surrogate TCA data: at 2000 rpm (mode 3) the dip is "
                    "0.03/0.006 %-points at 50/100 N.m, below the 0.02 threshold at 100 N.m; see "
-                   "docs/paper-findings.md F3")
+                   "docs/records/paper-findings.md F3")
 def test_efficiency_dip_at_the_paper_speed_2000rpm(tables):
     f, _ = fd.resonance_dips(tables[0], "f3")
     assert f["verdict"] == "reproduced", f["this FMU"]
@@ -98,14 +98,14 @@ def test_efficiency_dip_at_the_paper_speed_2000rpm(tables):
 
 @pytest.mark.xfail(strict=True, reason="surrogate TCA data: no contact loss and no second branch "
                    "at 2000 rpm, 100 N.m (min DTE stays ~14 um above b); see "
-                   "docs/paper-findings.md F4")
+                   "docs/records/paper-findings.md F4")
 def test_jump_and_tooth_separation_at_the_paper_speed_2000rpm_100Nm(tables):
     pts, cont = tables
     f, j = fd.jump_finding(cont, 100.0, "f3", pts)
     assert j["min_DTE_min_minus_b_um"] < 0, f["this FMU"]
 
 
-RECORD = pathlib.Path(__file__).resolve().parents[2] / "docs" / "paper-findings.json"
+RECORD = pathlib.Path(__file__).resolve().parents[2] / "docs" / "records" / "paper-findings.json"
 
 
 def test_default_study_verdicts(fmu_path, tmp_path):

@@ -1,4 +1,4 @@
-"""The report and plots as a reader meets them (issue 13 item 10): one speed printed once, not as
+"""The report and plots as a reader meets them: one speed printed once, not as
 "1150-1150 rpm"; efficiency in % in every table; Fig. 10's legend gives the table's mu_mean;
 the sweep plot's legend carries units; µm, not "um". Built from small hand-made tables, so no
 study needs to run."""

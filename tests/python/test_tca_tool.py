@@ -636,7 +636,7 @@ def test_cli_prints_the_error_and_returns_2(tmp_path, capsys):
 
 
 def test_import_of_a_semicolon_separated_table(tmp_path):
-    """Issue 13 item 9: spreadsheets in locales with a decimal comma write ';' between cells and
+    """Spreadsheets in locales with a decimal comma write ';' between cells and
     ',' as the decimal mark; such a table imports like the comma-separated original."""
     table = tmp_path / "set1.csv"
     assert tca.main(["export-csv", "--set", "1", "--out", str(table), "--rows", "360"]) == 0

@@ -1,4 +1,4 @@
-"""Paths given to the tools are relative to the user's working directory (issue 13 item 7):
+"""Paths given to the tools are relative to the user's working directory:
 a data file named relative to where the user stands reaches the FMU as an absolute path, so it
 is not looked up inside the host's temporary unzip folder; names of the FMU's own resources still
 pass through unchanged."""

@@ -1,4 +1,4 @@
-"""Silent surprises made visible (issue 13 item 8): warnings at initialisation for values that
+"""Silent surprises made visible: warnings at initialisation for values that
 are ignored or implausible, units in the range messages, and the elastic mesh deflection as an
 output beside the DTE (which keeps the paper's definition, half backlash included)."""
 
