@@ -177,6 +177,11 @@ def varied_columns(spec):
                   | {k for w in spec.whatif for k in w.params})
 
 
+# One point at the shipped FMU's own defaults (no paper choices), so that the report can give
+# the defaults' figure beside the paper's at the paper's reference point
+DEFAULTS_POINT = {"gear_set": 1, "lubricant": 1, "T_s": 100.0, SPEED_KEY: 2000.0}
+
+
 def paper_ehl(points):
     """The points with the paper's EHL choices and calibrated tooth data wherever a point does
     not set its own: the study reproduces the paper, where the FMU's defaults follow the traction
@@ -202,7 +207,8 @@ def run(name, out, fmu_path, scheduler=None, workers=2):
     fmu = parallel.FmuRef(fmu_path)
     swapped = swapped_lubricant(out)
     extra_cols = varied_columns(spec)
-    points = unique(sweep.complete(paper_ehl(points_of(spec, swapped)), extra_cols))
+    points = unique(sweep.complete(paper_ehl(points_of(spec, swapped)) + [DEFAULTS_POINT],
+                                   extra_cols))
     traced = sweep.complete(paper_ehl(traces_of(spec)), extra_cols)
     plan = sweeps_of(spec)
     sweeps = [({k: v for k, v in p.items() if k != SPEED_KEY}, speeds) for p, (_, speeds)

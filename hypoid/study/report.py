@@ -10,6 +10,7 @@ from hypoid.study import findings as fd
 from hypoid.maps import lossmap as lmap
 from hypoid.study import modes
 from hypoid.study import tables as tb
+from hypoid.fmu.values import TABLE
 
 
 def md_table(df, digits=None, index=True):
@@ -127,6 +128,81 @@ def fmu_dampers(modal):
     return out
 
 
+# ---------------------------------------------------------------------------- which settings
+def _value_text(name, value):
+    if name == "T_bath":
+        return f"{float(value) - 273.15:g} °C"
+    return f"{value:g}" if isinstance(value, float) else str(value)
+
+
+def differing_defaults():
+    """[(name, the tables' value, the FMU's default)] of the reference settings that are not the
+    shipped FMU's defaults (the paper's EHL choices and tooth data)."""
+    out = []
+    for name, value in tb.REFERENCE.items():
+        default = TABLE.start(name)
+        same = (np.isclose(float(value), float(default), rtol=0, atol=1e-12)
+                if not isinstance(value, str) and not isinstance(default, str)
+                else str(value) == str(default))
+        if not same:
+            out.append((name, value, default))
+    return out
+
+
+def _at_defaults(pts):
+    """Rows that ran every reference setting at the FMU's default instead of the paper's."""
+    if pts.empty:
+        return pts
+    mask = np.ones(len(pts), bool)
+    for name, _, default in differing_defaults():
+        if name in pts:
+            mask &= pts[name].astype(str).to_numpy() == str(default)
+    return pts[mask]
+
+
+def settings_section(pts):
+    """Which settings made every table, and the FMU defaults' figure beside the paper's at the
+    points that ran both."""
+    diff = differing_defaults()
+    ref = ", ".join(f"{n} = {_value_text(n, v)}" for n, v in tb.REFERENCE.items())
+    L = ["## Settings behind the tables", "",
+         f"Every table and figure below runs gear set 1 and OS265962 at the study's reference "
+         f"settings unless its own line says otherwise: {ref}. These are the paper's choices, "
+         "which the study reproduces."]
+    if diff:
+        L[-1] += (" The shipped FMU's defaults differ in " + ", ".join(
+            f"{n} ({_value_text(n, d)} by default, {_value_text(n, v)} here)" for n, v, d in diff)
+            + " (docs/friction-evidence.md says why).")
+    L.append("")
+    own = _at_defaults(pts)
+    rows = []
+    for r in own.to_dict("records"):
+        paper = tb.select(pts, gear_set=r["gear_set"], lubricant=r["lubricant"],
+                          lubricant_file="", T_s=r["T_s"], speed_rpm=r["speed_rpm"])
+        if paper.empty:
+            continue
+        rows.append({"point": f"set {r['gear_set']:g}, {r['speed_rpm']:g} rpm, "
+                              f"{r['T_s']:g} N·m, {_value_text('T_bath', r['T_bath'])}",
+                     "eta_rms, paper's choices [%]": 100 * float(paper["eta_rms"].iloc[0]),
+                     "eta_rms, FMU defaults [%]": 100 * float(r["eta_rms"]),
+                     "P_loss, paper's choices [W]": float(paper["P_loss_mean_W"].iloc[0]),
+                     "P_loss, FMU defaults [W]": float(r["P_loss_mean_W"])})
+    if rows:
+        t = pd.DataFrame(rows)
+        L += ["The same point with the paper's choices (the tables) and with the shipped FMU's "
+              "defaults (what `hypoid run` gives without --set):", "",
+              md_table(t, {c: (3 if "%" in c else 1) for c in t.columns if c != "point"},
+                       index=False), ""]
+    return L
+
+
+def made_with(**eq):
+    """The line under a table: what it selects beyond the reference settings."""
+    parts = [f"{n} = {_value_text(n, v)}" for n, v in eq.items()]
+    return [f"*Settings: {', '.join(parts) if parts else 'the reference'}; the rest as in "
+            "'Settings behind the tables'.*", ""]
+
+
 def _pivot_lines(t, columns=None):
     if t is None:
         return []
@@ -141,6 +217,7 @@ def _torque_section(pts, figs):
            "input torque; open circles: contact lost during the cycle; dotted: resonance speeds.")
     L += _pivot_lines(_pivot(tb.select(pts, gear_set=1, lubricant=1, lubricant_file=""), "T_s"),
                       "eta {} N·m [%]")
+    L += made_with(gear_set=1, lubricant="OS265962")
     for key in [k for k in figs if k.startswith("fig8-e0x")]:
         _image(L, figs, key, "Calibration probe: the same with the unloaded transmission error "
                f"scaled by {key[8:]} (e_0_scale), to see what the paper's 2000 rpm findings need.")
@@ -150,6 +227,7 @@ def _torque_section(pts, figs):
            "efficiency (top) and difference to OS265962 (bottom).")
     L += _pivot_lines(_pivot(tb.select(pts, gear_set=1, T_s=100.0), "lubricant_name"),
                       "eta {} [%]")
+    L += made_with(gear_set=1, T_s=100.0)
     return L
 
 
@@ -208,6 +286,7 @@ def _engagement_section(pts, figs):
            "dotted lines: each set's resonance speeds.")
     L += _pivot_lines(_pivot(tb.select(pts, lubricant=1, lubricant_file="", T_s=100.0)
                              .query("gear_set in [2, 3]"), "gear_set"), "eta set {} [%]")
+    L += made_with(lubricant="OS265962", T_s=100.0)
     L += ["## Lubrication regime (Fig. 5)", ""]
     _image(L, figs, "fig5", "Viscosity and elasticity parameters of every loaded pair over two "
            "mesh cycles at 1000 rpm; the regions are the Hamrock-Dowson substitute of physics.md "
@@ -275,6 +354,7 @@ def write(out, pts, cont, info, figs, find, modal, lossmap=None, det=None):
     makes them); returns the path."""
     ok_pts, ok_cont = tb.prepare(pts), tb.prepare(cont)
     L = _header(pts, cont, info, find, modal)
+    L += settings_section(ok_pts)
     L += _torque_section(ok_pts, figs)
     L += _jump_section(ok_cont, figs)
     L += _engagement_section(ok_pts, figs)

@@ -85,3 +85,22 @@ def test_fig9_legend_hides_no_resonance_label(captured):
     fig.canvas.draw()
     box = fig.legends[0].get_window_extent().transformed(fig.transFigure.inverted())
     assert box.y1 <= top
+
+
+def test_the_report_says_which_settings_made_the_tables_and_gives_the_defaults_figure():
+    """Before, the report quoted the paper-choice efficiencies (99.31 % at 2000 rpm, 100 N·m,
+    40 °C) without saying so, where the shipped FMU gives another figure."""
+    from hypoid.study import tables as tb
+
+    common = {"gear_set": 1, "lubricant": 1, "lubricant_file": "", "T_s": 100.0,
+              "speed_rpm": 2000.0, "status": "ok", **{k: v for k, v in tb.REFERENCE.items()}}
+    paper = {**common, "eta_rms": 0.9931, "P_loss_mean_W": 145.0}
+    own = {**common, **{n: d for n, _, d in report.differing_defaults()},
+           "eta_rms": 0.9872, "P_loss_mean_W": 268.3}
+    pts = tb.prepare(pd.DataFrame([paper, own]))
+    text = "\n".join(report.settings_section(pts))
+    assert "tooth_data (loaded by default, paper here)" in text
+    assert "roelands_z" in text and "T_bath = 40 °C" in text
+    assert "99.310" in text and "98.720" in text  # both figures, side by side
+    assert "268.3" in text and "145.0" in text
+    assert {n for n, _, _ in report.differing_defaults()} >= {"tooth_data", "roelands_z"}
