@@ -16,7 +16,7 @@ TOOLS = {
     "sweep": ("hypoid.study.sweep", "grid of steady-state points or continuation sweeps (dask, resume)"),
     "study": ("hypoid.study.paper", "the paper's studies: tables, plots and a report (default, full)"),
     "regress": ("hypoid.regress", "compare FMU outputs with regression references (--update)"),
-    "records": ("hypoid.records.cli", "the measured records of docs/records/: pages from their "
+    "records": ("hypoid.cli.records", "the measured records of docs/records/: pages from their "
                 "data, checks, measurements"),
     "drive-cycle": ("hypoid.cli.drive_cycle", "the axle in a car over WLTC, NEDC or a CSV cycle: losses, oil "
                     "temperature"),

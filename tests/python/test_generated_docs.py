@@ -9,7 +9,8 @@ import shutil
 
 import pytest
 
-from hypoid.records import cli, docblocks
+from hypoid.records import docblocks
+from hypoid.records import writer as cli
 from hypoid.records.registry import FOLDER, RECORDS
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
