@@ -73,7 +73,7 @@ def main():
     ap.add_argument("--t-amb", type=float, default=20.0)
     ap.add_argument("--t-oil0", type=float, default=20.0)
     ap.add_argument("--fmu", default=str(ROOT / "build" / "HypoidGearPair.fmu"))
-    ap.add_argument("--vehicle-fmu", default=str(runner.DEFAULT_VEHICLE_FMU))
+    ap.add_argument("--vehicle-fmu", default=str(ROOT / "build" / "LongitudinalVehicle.fmu"))
     ap.add_argument("--json", default=str(LEVELS_DATA), help="where the levels' results go")
     ap.add_argument("--summary", type=pathlib.Path, help="record this `hypoid drive-cycle` output")
     args = ap.parse_args()

@@ -27,6 +27,7 @@ import numpy as np
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import wp_driver as W  # noqa: E402
 
+from hypoid import data  # noqa: E402
 from hypoid.records.registry import FOLDER, RECORDS  # noqa: E402
 from hypoid.records.work_precision import LEVEL_TITLES, read_csv  # noqa: E402
 
@@ -76,10 +77,10 @@ def map_source(fmu):
     name = "maps/gearset1_OS265962.txt"
     if os.path.exists(os.path.join(fmu.dir, "resources", name)):
         return "built into the FMU"
-    local = ROOT / "resources" / name
-    if local.exists():
+    local = data.resource(name)  # the package's built-in data (the checkout's resources/)
+    if local.is_file():
         fmu.map_file = str(local)
-        return f"{local.relative_to(ROOT)} (efficiency_map_file; not yet in the FMU)"
+        return f"resources/{name} (efficiency_map_file; not yet in the FMU)"
     return None
 
 

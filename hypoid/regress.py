@@ -1,43 +1,20 @@
-"""`hypoid regress`: run a set of scenarios and compare their outputs with a reference, within
-per-quantity tolerances. Exit status 1 when anything moved beyond its tolerance.
-
-    hypoid regress                        # the built-in scenarios against tests/regression/
-    hypoid regress --update               # rewrite the reference deliberately (review, commit)
-    hypoid regress --scenarios mine.toml --update   # make a reference of your own scenarios
-    hypoid regress --scenarios mine.toml            # ... and compare with it later
-
-A scenarios file of your own is TOML, one table per scenario with the start values by name
-(any parameter or input, enumeration items by name, speed_rpm required):
-
-    [hot_oil_3000rpm]
-    speed_rpm = 3000
-    T_s = 150
-    T_bath = 363.15
-    lubricant_file = "my_oil.txt"
-
-Its reference goes to <file>.reference.csv beside it unless --reference names another file; the
-tolerances are tests/regression/tolerances.csv unless --tolerances names another file (columns
-quantity, rel, abs; documented in tests/regression/README.md). Each scenario runs a fixed time
-(no steady-state detection, so only the FMU is under test): 60 mesh cycles, then 20 mesh cycles
-sampled 32 times per cycle. The quantities compared are those of the study tables, and in a
-scenario with axle_losses = full the axle's ledger too (P_axle, eta_axle, every part, T_oil).
-"""
+"""Regression of FMU outputs: fixed scenarios run for a fixed time (no steady-state detection,
+so only the FMU is under test) and their outputs compared with a reference within per-quantity
+tolerances (tests/regression/README.md); with axle_losses = full the axle's ledger too. The
+command is `hypoid regress` (hypoid/cli/regress.py)."""
 
 import csv
 import json
 import math
 import pathlib
-import sys
 import tomllib
 
-from hypoid.cli import args as cliargs
-from hypoid.study import metrics, steady
+from hypoid import data
+from hypoid.errors import UsageError
 from hypoid.fmu.instance import RPM, SPEED_KEY, Instance
-from hypoid.paths import user_path
 from hypoid.fmu.values import TABLE
+from hypoid.study import metrics, steady
 
-ROOT = pathlib.Path(__file__).resolve().parents[1]
-REF_DIR = ROOT / "tests" / "regression"
 SETTLE_CYCLES = 60
 RECORD_CYCLES = 20
 SCENARIOS = {
@@ -93,29 +70,29 @@ def read_scenarios(path):
         with open(path, "rb") as fh:
             data = tomllib.load(fh)
     except tomllib.TOMLDecodeError as e:
-        raise cliargs.UsageError(f"{path}: not a TOML scenarios file ({e})") from None
+        raise UsageError(f"{path}: not a TOML scenarios file ({e})") from None
     scenarios = {}
     for name, params in data.items():
         if not isinstance(params, dict) or SPEED_KEY not in params:
-            raise cliargs.UsageError(f"{path}: scenario [{name}] needs a table of start values "
+            raise UsageError(f"{path}: scenario [{name}] needs a table of start values "
                                      f"with {SPEED_KEY} (see hypoid regress --help)")
         try:
             scenarios[name] = {k: TABLE.parse(k, v) for k, v in params.items()}
         except ValueError as e:
-            raise cliargs.UsageError(f"{path}: scenario [{name}]: {e}") from None
+            raise UsageError(f"{path}: scenario [{name}]: {e}") from None
     if not scenarios:
-        raise cliargs.UsageError(f"{path}: no scenarios")
+        raise UsageError(f"{path}: no scenarios")
     return scenarios
 
 
-def read_tolerances(path=REF_DIR / "tolerances.csv"):
-    with open(path, newline="") as fh:
+def read_tolerances(path=None):
+    with open(path or data.regression("tolerances.csv"), newline="") as fh:
         return {r["quantity"]: (float(r["rel"]), float(r["abs"])) for r in csv.DictReader(fh)}
 
 
-def read_reference(path=REF_DIR / "reference.csv"):
+def read_reference(path=None):
     ref, params = {}, {}
-    with open(path, newline="") as fh:
+    with open(path or data.regression("reference.csv"), newline="") as fh:
         for r in csv.DictReader(fh):
             ref.setdefault(r["scenario"], {})[r["quantity"]] = float(r["value"])
             params[r["scenario"]] = r["params"]
@@ -126,8 +103,8 @@ def _params_text(params):
     return json.dumps(params, sort_keys=True)
 
 
-def write_reference(values, path=REF_DIR / "reference.csv", scenarios=SCENARIOS):
-    path = pathlib.Path(path)
+def write_reference(values, path=None, scenarios=SCENARIOS):
+    path = pathlib.Path(path or default_reference(update=True))
     path.parent.mkdir(parents=True, exist_ok=True)
     with open(path, "w", newline="") as fh:
         w = csv.writer(fh)
@@ -161,48 +138,9 @@ def compare(values, ref, ref_params, tol, scenarios=SCENARIOS):
     return rows, problems
 
 
-def _parser():
-    ap = cliargs.Parser("hypoid regress", __doc__)
-    ap.add_fmu()
-    ap.add_argument("--scenarios", type=user_path,
-                    help="TOML file of your own scenarios (default: the built-in ones)")
-    ap.add_argument("--reference", type=user_path,
-                    help="reference CSV (default: tests/regression/reference.csv, or "
-                         "<scenarios>.reference.csv with --scenarios)")
-    ap.add_argument("--tolerances", type=user_path, default=str(REF_DIR / "tolerances.csv"),
-                    help="tolerances CSV (default: tests/regression/tolerances.csv)")
-    ap.add_argument("--update", action="store_true", help="rewrite the reference values")
-    return ap
-
-
-def main(argv):
-    args = _parser().parse_args(argv)
-    scenarios = read_scenarios(args.scenarios) if args.scenarios else SCENARIOS
-    reference = pathlib.Path(args.reference or (
-        pathlib.Path(args.scenarios).with_suffix(".reference.csv") if args.scenarios
-        else REF_DIR / "reference.csv"))
-    tolerances = read_tolerances(args.tolerances)
-    values = run_all(cliargs.fmu_path(args.fmu), scenarios)
-    if args.update:
-        old = read_reference(reference)[0] if reference.exists() else {}
-        write_reference(values, reference, scenarios)
-        moved = sum(1 for n, qs in values.items() for q, v in qs.items()
-                    if n in old and not math.isclose(v, old[n].get(q, math.nan), rel_tol=1e-12))
-        print(f"hypoid regress: wrote {reference} ({len(values)} scenarios; "
-              f"{moved} values changed)")
-        return 0
-    if not reference.exists():
-        raise cliargs.UsageError(f"{reference}: no reference yet; make it with --update")
-    ref, ref_params = read_reference(reference)
-    _, problems = compare(values, ref, ref_params, tolerances, scenarios)
-    for p in problems:
-        print("MOVED " + p)
-    print(f"hypoid regress: {len(scenarios)} scenarios against {reference}, "
-          f"{'all within tolerance' if not problems else f'{len(problems)} problems'}")
-    return 1 if problems else 0
-
-
-if __name__ == "__main__":
-    from hypoid import cli
-
-    sys.exit(cli.main(["regress", *sys.argv[1:]]))
+def default_reference(update):
+    """The built-in scenarios' reference (the package's regression data); --update rewrites the
+    checkout's tests/regression/reference.csv."""
+    if update:
+        return data.writable("tests/regression", "--reference") / "reference.csv"
+    return data.regression("reference.csv")

@@ -9,13 +9,13 @@ import os
 import sys
 
 TOOLS = {
-    "tca": ("hypoid.tca.gearsets", "tooth contact data: surrogate gear sets, import of a user's TCA table"),
-    "lubricant": ("hypoid.lubricant", "lubricant data files from data-sheet values"),
-    "run": ("hypoid.study.scenario", "simulate one scenario and write results and plots"),
-    "effmap": ("hypoid.maps.effmap", "efficiency maps of the full model for the FMU's map level"),
-    "sweep": ("hypoid.study.sweep", "grid of steady-state points or continuation sweeps (dask, resume)"),
-    "study": ("hypoid.study.paper", "the paper's studies: tables, plots and a report (default, full)"),
-    "regress": ("hypoid.regress", "compare FMU outputs with regression references (--update)"),
+    "tca": ("hypoid.cli.tca", "tooth contact data: surrogate gear sets, import of a user's TCA table"),
+    "lubricant": ("hypoid.cli.lubricant", "lubricant data files from data-sheet values"),
+    "run": ("hypoid.cli.run", "simulate one scenario and write results and plots"),
+    "effmap": ("hypoid.cli.effmap", "efficiency maps of the full model for the FMU's map level"),
+    "sweep": ("hypoid.cli.sweep", "grid of steady-state points or continuation sweeps (dask, resume)"),
+    "study": ("hypoid.cli.study", "the paper's studies: tables, plots and a report (default, full)"),
+    "regress": ("hypoid.cli.regress", "compare FMU outputs with regression references (--update)"),
     "records": ("hypoid.cli.records", "the measured records of docs/records/: pages from their "
                 "data, checks, measurements"),
     "drive-cycle": ("hypoid.cli.drive_cycle", "the axle in a car over WLTC, NEDC or a CSV cycle: losses, oil "

@@ -5,17 +5,17 @@ and `--vary NAME=VALUES` (any parameter or input by name, enumeration items by n
 and exits with status 2, never with a traceback."""
 
 import argparse
-import pathlib
 import re
 
 import numpy as np
 
+from hypoid import data
 from hypoid.errors import UsageError  # noqa: F401 (the tools' cliargs.UsageError)
-from hypoid.paths import user_path
 from hypoid.fmu.values import TABLE, BadValue
+from hypoid.paths import user_path
 
-ROOT = pathlib.Path(__file__).resolve().parents[2]
-DEFAULT_FMU = ROOT / "build" / "HypoidGearPair.fmu"  # the FMU this checkout builds
+FMU_HELP = ("the {what} (default: ${env}, else build/{name} of the checkout the package runs "
+            "from)")
 SET_HELP = ("start values by name, e.g. T_s=200 gear_set=2 friction_model=ehl_isothermal "
             "speed_rpm=3000 (speed_rpm: pinion speed, sets w_set and w_p0); README 'Variables' "
             "lists every name, its unit and the enumeration items")
@@ -44,9 +44,8 @@ class Parser(argparse.ArgumentParser):
         raise UsageError(f"{message} (see {self.prog} --help)")
 
     def add_fmu(self):
-        self.add_argument("--fmu", type=user_path, default=str(DEFAULT_FMU),
-                          help=f"the FMU (default: {DEFAULT_FMU.relative_to(ROOT)} of this "
-                               "checkout)")
+        self.add_argument("--fmu", type=user_path, help=FMU_HELP.format(
+            what="FMU", env=data.FMUS["gear"][1], name=data.FMUS["gear"][0]))
 
     def add_set(self):
         self.add_argument("--set", nargs="*", action="extend", default=[], metavar="NAME=VALUE",
@@ -57,12 +56,9 @@ class Parser(argparse.ArgumentParser):
                           help=VARY_HELP)
 
 
-def fmu_path(path):
-    """The FMU file, checked to exist."""
-    p = pathlib.Path(path)
-    if not p.is_file():
-        raise UsageError(f"{p}: no such FMU file (build it with scripts/setup.sh, or give --fmu)")
-    return p
+def fmu_path(path, kind="gear"):
+    """The FMU file given (or found when None: hypoid.data.fmu), checked to exist."""
+    return data.fmu(kind, path)
 
 
 def assignments(items, option="--set"):

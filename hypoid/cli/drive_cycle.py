@@ -5,7 +5,7 @@ axle, with the difference.
 
 The scene (docs/axle.md): the gear FMU (load_mode = torque, axle_losses = full, thermal_model =
 sump) carries the vehicle's inertia at its wheel end (I_w += m r^2 + J_wheels) and the
-half-shaft compliance (k_t2 = k_hs); the vehicle FMU (build/LongitudinalVehicle.fmu, coupling =
+half-shaft compliance (k_t2 = k_hs); the vehicle FMU (LongitudinalVehicle.fmu, coupling =
 2) returns the road load and the brake torque at the wheel speed; a driver (a PI speed
 controller with feed-forward of the cycle's acceleration) sets the propeller-shaft torque T_s
 and the brakes. Both FMUs run in fmpy's co-simulation master (Jacobi, communication step
@@ -44,11 +44,12 @@ import pathlib
 import shutil
 import tempfile
 
+from hypoid import data
 from hypoid.cli import args as cliargs
 from hypoid.drivecycle import summary
 from hypoid.drivecycle.cycles import load_cycle
 from hypoid.drivecycle.levels import LEVELS, ZERO_C, choose_level
-from hypoid.drivecycle.run import DEFAULT_VEHICLE_FMU, MASTERS, simulate
+from hypoid.drivecycle.run import MASTERS, simulate
 from hypoid.drivecycle.vehicle import Vehicle, fmu_parameters, read_vehicle_file, split_set
 from hypoid.paths import user_path
 
@@ -56,8 +57,8 @@ from hypoid.paths import user_path
 def _parser():
     ap = cliargs.Parser("hypoid drive-cycle", __doc__)
     ap.add_fmu()
-    ap.add_argument("--vehicle-fmu", type=user_path, default=str(DEFAULT_VEHICLE_FMU),
-                    help="the vehicle FMU (default: build/LongitudinalVehicle.fmu)")
+    ap.add_argument("--vehicle-fmu", type=user_path, help=cliargs.FMU_HELP.format(
+        what="vehicle FMU", env=data.FMUS["vehicle"][1], name=data.FMUS["vehicle"][0]))
     ap.add_argument("--cycle", default="wltc3",
                     help="wltc3 (default), wltc1, wltc2, wltc3a, nedc, udds, hwfet, us06, ftp75 "
                          "or a CSV file")
@@ -103,7 +104,7 @@ def check_args(args):
 def main(argv):
     args = _parser().parse_args(argv)
     check_args(args)
-    gear_fmu, vehicle_fmu = cliargs.fmu_path(args.fmu), cliargs.fmu_path(args.vehicle_fmu)
+    gear_fmu, vehicle_fmu = cliargs.fmu_path(args.fmu), cliargs.fmu_path(args.vehicle_fmu, "vehicle")
     known = fmu_parameters(vehicle_fmu)
     car = read_vehicle_file(args.vehicle, known) if args.vehicle else Vehicle()
     car_set, gear_set = split_set(args.set, known)

@@ -6,7 +6,6 @@ FMUs run in the package's co-simulation master (hypoid.cosim.master, fmpy, Jacob
 libcosim's (hypoid.cosim.libcosim, with the build's integer-coded gear FMU)."""
 
 import os
-import pathlib
 import sys
 import time
 from dataclasses import dataclass
@@ -17,9 +16,6 @@ from hypoid.cosim import libcosim, master
 from hypoid.drivecycle.levels import LEVELS
 from hypoid.drivecycle.vehicle import Driver, Vehicle, fmu_parameters
 from hypoid.fmu.values import TABLE
-
-ROOT = pathlib.Path(__file__).resolve().parents[2]
-DEFAULT_VEHICLE_FMU = ROOT / "build" / "LongitudinalVehicle.fmu"
 
 GEAR_OUT = ["w_w", "w_p", "T_oil", "P_loss", "P_loss_viscous", "P_churn", "P_bearings",
             "P_seals", "P_axle", "P_in_axle", "eta_axle", "E_in", "E_out", "E_friction",

@@ -1,6 +1,6 @@
-"""A user's TCA table (docs/tca-import.md): reading, the checks of its cells and of its physics,
-and the fit that turns it into a gear-set file's Fourier series. Every problem raises TableError
-naming the file, line, column and value. The command line is hypoid/tca/gearsets.py."""
+"""A user's TCA table (docs/tca-import.md): reading, and the checks of its cells and of its
+physics. Every problem raises TableError naming the file, line, column and value. The fit into a
+gear-set file is hypoid/tca/table_import.py, the command line hypoid/cli/tca.py."""
 
 import csv
 import math
@@ -11,10 +11,7 @@ import numpy as np
 
 from hypoid import csvtext
 from hypoid.tca import surrogate as sur
-from hypoid.tca.gearset_file import (FLANK_SERIES, MAX_LEVELS, MESH_SERIES, PAIR_SERIES, UNITS,
-                                 Gearset)
-from hypoid.tca.fit import (CONTACT_HARMONICS, HARMONICS, N_SAMPLES, fit_gearset, fit_notes, grid,
-                            resample)
+from hypoid.tca.fit import CONTACT_HARMONICS, HARMONICS
 
 LS_TOL = 0.01  # load shares within [−LS_TOL, 1 + LS_TOL] are accepted and clipped to [0, 1]
 LS_SUM_TOL = 0.05  # the three pairs' shares must sum to 1 within this
@@ -55,7 +52,7 @@ class Table:
     columns: dict
 
 
-def _fail(table_or_path, line, column, value, problem):
+def fail(table_or_path, line, column, value, problem):
     path = getattr(table_or_path, "path", table_or_path)
     where = f", line {line}" if line else ""
     where += f", column '{column}'" if column else ""
@@ -74,7 +71,7 @@ def read_table(path):
         raise TableError(f"{path}: not a readable CSV text file ({err})") from None
     header_at = next((i for i, (_, row) in enumerate(rows) if row[0] in ANGLE_COLUMNS), None)
     if header_at is None:
-        _fail(path, None, None, None,
+        fail(path, None, None, None,
               f"no column header row starting with {' or '.join(ANGLE_COLUMNS)}")
     meta = _read_meta(path, rows[:header_at])
     line, header = rows[header_at]
@@ -108,9 +105,9 @@ def _read_meta(path, rows):
     for line, row in rows:
         key, values = row[0], [c for c in row[1:] if c]
         if key not in META_KEYS:
-            _fail(path, line, None, key, f"unknown metadata key (known: {', '.join(META_KEYS)})")
+            fail(path, line, None, key, f"unknown metadata key (known: {', '.join(META_KEYS)})")
         if len(values) != 1 or key in meta:
-            _fail(path, line, None, key, "metadata needs one row 'key,value' per key")
+            fail(path, line, None, key, "metadata needs one row 'key,value' per key")
         meta[key] = (line, values[0])
     return meta
 
@@ -123,20 +120,20 @@ def _check_header(path, line, header):
     for names, problem in ((missing, "missing column(s)"), (unknown, "unknown column(s)"),
                            (duplicate, "duplicate column(s)")):
         if names:
-            _fail(path, line, None, None, f"{problem} {', '.join(names)}; the columns are "
+            fail(path, line, None, None, f"{problem} {', '.join(names)}; the columns are "
                   f"{' or '.join(ANGLE_COLUMNS)}, {', '.join(DATA_COLUMNS)} and optionally "
                   f"{', '.join(OPTIONAL_COLUMNS)}")
     for group in (POINT_COLUMNS, tuple(MATERIAL_COLUMNS.values())):
         given = [c for c in group if c in header]
         if given and len(given) != len(group):
-            _fail(path, line, None, None, f"column(s) {', '.join(c for c in group if c not in given)}"
+            fail(path, line, None, None, f"column(s) {', '.join(c for c in group if c not in given)}"
                   f" missing: {', '.join(group)} go together")
 
 
 def _fit_row(path, line, row, n):
     """A data row padded with blank cells to n cells; extra cells must be blank."""
     if any(row[n:]):
-        _fail(path, line, None, None, f"row has more cells than the header ({n})")
+        fail(path, line, None, None, f"row has more cells than the header ({n})")
     return row[:n] + [""] * (n - len(row))
 
 
@@ -144,16 +141,16 @@ def _cell(path, line, name, text):
     """The number in a cell of column `name`; NaN for a blank cell (allowed only for pair data)."""
     if not text:
         if name in ANGLE_COLUMNS or name in MESH_COLUMNS:
-            _fail(path, line, name, text, "blank cell; only ls and contact data may be blank")
+            fail(path, line, name, text, "blank cell; only ls and contact data may be blank")
         return math.nan
     try:
         value = csvtext.number(text)  # also a decimal comma (tables separated by ';')
     except ValueError:
-        _fail(path, line, name, text, "not a number")
+        fail(path, line, name, text, "not a number")
     if math.isnan(value):
-        _fail(path, line, name, text, "NaN is not allowed; leave cells out of contact blank")
+        fail(path, line, name, text, "NaN is not allowed; leave cells out of contact blank")
     if math.isinf(value):
-        _fail(path, line, name, text, "not a finite number")
+        fail(path, line, name, text, "not a finite number")
     return value
 
 
@@ -173,9 +170,9 @@ class Checked:
 
 def check_table(table, speed_rpm=None, harmonics=HARMONICS, contact_harmonics=CONTACT_HARMONICS):
     """Checks a parsed table and converts it to SI; raises TableError naming line, column, value."""
-    N_p, N_g = (_meta_int(table, key) for key in ("N_p", "N_g"))
+    N_p, N_g = (meta_int(table, key) for key in ("N_p", "N_g"))
     if N_g < N_p:
-        _fail(table, table.meta["N_g"][0], None, N_g, f"N_g is smaller than N_p = {N_p}")
+        fail(table, table.meta["N_g"][0], None, N_g, f"N_g is smaller than N_p = {N_p}")
     speed = _speed(table, speed_rpm)
     min_rows = max(MIN_ROWS, 3 * (2 * harmonics + 1), 2 * contact_harmonics + 1)
     rows = _one_period(table, N_p, min_rows)
@@ -215,7 +212,7 @@ def _check_magnitudes(table, lines, cols, omega_p):
         x = _typical(cols[name])
         if x < low or x > high:
             i = int(np.nanargmin(np.abs(np.abs(cols[name]) - x)))
-            _fail(table, lines[i], name, cols[name][i],
+            fail(table, lines[i], name, cols[name][i],
                   f"implausible: typically {x:.4g} {unit}, expected {low:g} ... {high:g} {unit}; "
                   f"values in {small if x < low else large} under the {unit} header?")
     scale = omega_p * 1e-3 * _typical(cols["R_p_mm"])
@@ -225,20 +222,20 @@ def _check_magnitudes(table, lines, cols, omega_p):
         ratio = speed / scale
         if not SPEED_RATIO[0] <= ratio <= SPEED_RATIO[1]:
             i = int(np.nanargmin(np.abs(np.hypot(cols[x_col], cols[y_col]) - speed)))
-            _fail(table, lines[i], x_col, cols[x_col][i],
+            fail(table, lines[i], x_col, cols[x_col][i],
                   f"implausible: flank speeds of typically {speed:.4g} m/s against omega_p R_p = "
                   f"{scale:.4g} m/s at {omega_p * 30 / math.pi:g} rpm ({ratio:.3g} times): "
                   + ("values in mm/s under the m/s header, or speed_rpm too small?" if ratio > 1
                      else "values in km/s under the m/s header, or speed_rpm too large?"))
 
 
-def _meta_int(table, key):
+def meta_int(table, key):
     if key not in table.meta:
-        _fail(table, None, None, None, f"missing metadata row '{key},<value>' before the header")
+        fail(table, None, None, None, f"missing metadata row '{key},<value>' before the header")
     line, text = table.meta[key]
-    value = _to_float(text)
+    value = to_float(text)
     if not (math.isfinite(value) and value >= 1 and value.is_integer()):
-        _fail(table, line, None, text, f"{key} must be a positive integer")
+        fail(table, line, None, text, f"{key} must be a positive integer")
     return int(value)
 
 
@@ -249,15 +246,15 @@ def _speed(table, speed_rpm):
     elif "speed_rpm" in table.meta:
         line, text = table.meta["speed_rpm"]
     else:
-        _fail(table, None, None, None,
+        fail(table, None, None, None,
               "no pinion speed: give a 'speed_rpm,<value>' row or --speed-rpm")
-    speed = _to_float(text)
+    speed = to_float(text)
     if not (math.isfinite(speed) and speed > 0):
-        _fail(table, line, "speed_rpm", text, "the pinion speed must be a positive number [rpm]")
+        fail(table, line, "speed_rpm", text, "the pinion speed must be a positive number [rpm]")
     return speed
 
 
-def _to_float(text):
+def to_float(text):
     try:
         return float(text)
     except ValueError:
@@ -270,21 +267,21 @@ def _one_period(table, N_p, min_rows):
     phi = table.columns[table.angle] * to_rad
     period = 6.0 * math.pi / N_p
     if len(phi) < 2:
-        _fail(table, None, None, None, f"too few rows ({len(phi)}); at least {min_rows} per period")
+        fail(table, None, None, None, f"too few rows ({len(phi)}); at least {min_rows} per period")
     step = np.diff(phi)
     if (step <= 0).any():
         i = int(np.argmax(step <= 0)) + 1
-        _fail(table, table.lines[i], table.angle, table.columns[table.angle][i],
+        fail(table, table.lines[i], table.angle, table.columns[table.angle][i],
               "angles must increase strictly from row to row")
     rows = np.flatnonzero(phi - phi[0] < period * (1.0 - 1e-9))
     gap = phi[0] + period - phi[rows[-1]]
     if gap > 1.5 * step[: max(len(rows) - 1, 1)].max() + 1e-12:
-        _fail(table, table.lines[rows[-1]], table.angle, table.columns[table.angle][rows[-1]],
+        fail(table, table.lines[rows[-1]], table.angle, table.columns[table.angle][rows[-1]],
               f"the angles span {(phi[rows[-1]] - phi[0]) / to_rad:.6g} but one period is 3 "
               f"angular pitches = {period / to_rad:.6g} ({table.angle}, N_p = {N_p}); the table "
               "must cover it up to about one step")
     if len(rows) < min_rows:
-        _fail(table, None, None, None, f"too few rows in one period: {len(rows)}, need {min_rows} "
+        fail(table, None, None, None, f"too few rows in one period: {len(rows)}, need {min_rows} "
               "(at least 64, and more than twice the harmonics per period)")
     return rows
 
@@ -293,14 +290,14 @@ def _check_positive(table, lines, cols, names, problem):
     for name in names:
         bad = np.flatnonzero(~(cols[name] > 0))
         if len(bad):
-            _fail(table, lines[bad[0]], name, cols[name][bad[0]], problem)
+            fail(table, lines[bad[0]], name, cols[name][bad[0]], problem)
 
 
 def _load_share(table, lines, cols):
     ls = np.nan_to_num(cols["ls"], nan=0.0)  # blank = 0
     bad = np.flatnonzero((ls < -LS_TOL) | (ls > 1.0 + LS_TOL))
     if len(bad):
-        _fail(table, lines[bad[0]], "ls", ls[bad[0]],
+        fail(table, lines[bad[0]], "ls", ls[bad[0]],
               f"load share outside [0, 1] by more than {LS_TOL}")
     return np.clip(ls, 0.0, 1.0)
 
@@ -312,12 +309,12 @@ def _contact(table, lines, cols, omega_p, omega_g):
     partial = np.flatnonzero(given.any(axis=0) & ~given.all(axis=0))
     if len(partial):
         r = partial[0]
-        _fail(table, lines[r], names[int(np.argmin(given[:, r]))], "",
+        fail(table, lines[r], names[int(np.argmin(given[:, r]))], "",
               "blank while other contact columns of the row are given")
     inside = given[0]
     loaded = np.flatnonzero(~inside & (np.nan_to_num(cols["ls"]) > LS_TOL))
     if len(loaded):
-        _fail(table, lines[loaded[0]], CONTACT_COLUMNS[0], "",
+        fail(table, lines[loaded[0]], CONTACT_COLUMNS[0], "",
               f"blank contact data but ls = {cols['ls'][loaded[0]]:g} > 0")
     _check_arc(table, lines, inside)
     values = {key: _reduced_radius(table, lines, cols, pair)
@@ -326,7 +323,7 @@ def _contact(table, lines, cols, omega_p, omega_g):
     if len(bad):
         i = bad[0]
         R_x, R_y = 1e3 * values["R_x"][i], 1e3 * values["R_y"][i]
-        _fail(table, lines[i], "r_px_mm", cols["r_px_mm"][i],
+        fail(table, lines[i], "r_px_mm", cols["r_px_mm"][i],
               f"reduced radii R_x = {R_x:.4g} mm > R_y = {R_y:.4g} mm: x must be the minor axis "
               "of the contact ellipse (the larger curvature)")
     v_c = _contact_point(table, lines, cols)
@@ -359,7 +356,7 @@ def _contact_point(table, lines, cols):
             if len(bad):
                 i = bad[0]
                 column = MATERIAL_COLUMNS[f"{name}_{a}"]
-                _fail(table, lines[i], column, float(cols[column][i]),
+                fail(table, lines[i], column, float(cols[column][i]),
                       f"the velocity sets contradict each other: the contact point moves at "
                       f"{ref[a][i]:.6g} m/s along {a} by {ref_name} but {other[a][i]:.6g} m/s by "
                       f"{name} (material minus relative velocity must be the contact point's "
@@ -374,12 +371,12 @@ def _check_arc(table, lines, inside):
     starts = np.flatnonzero(inside & ~np.roll(inside, 1))
     runs = len(starts)
     if runs != 1:
-        _fail(table, lines[starts[-1]] if runs else None, None, None,
+        fail(table, lines[starts[-1]] if runs else None, None, None,
               "the tabulated pair must be in contact over one range of angles "
               f"(found {runs}{'; this row starts the last' if runs else ''}); "
               "leave its contact cells blank only out of contact")
     if inside.sum() < MIN_CONTACT_ROWS:
-        _fail(table, None, None, None,
+        fail(table, None, None, None,
               f"too few rows in contact: {inside.sum()}, need {MIN_CONTACT_ROWS}")
 
 
@@ -388,171 +385,13 @@ def _reduced_radius(table, lines, cols, pair):
     for name in pair:
         zero = np.flatnonzero(cols[name] == 0)
         if len(zero):
-            _fail(table, lines[zero[0]], name, 0.0, "a radius of curvature cannot be zero")
+            fail(table, lines[zero[0]], name, 0.0, "a radius of curvature cannot be zero")
     with np.errstate(divide="ignore", invalid="ignore"):
         R = 1e-3 * sur.reduced(r_p, r_g)
     bad = np.flatnonzero(~np.isnan(r_p) & ~(R > 0))
     if len(bad):
         i = bad[0]
-        _fail(table, lines[i], pair[0], r_p[i],
+        fail(table, lines[i], pair[0], r_p[i],
               f"with {pair[1]} = {r_g[i]:g} the reduced radius is not positive "
               "(radii are signed: convex > 0, concave < 0)")
     return R
-
-
-# --- TCA table: fit ----------------------------------------------------------------------------
-
-def table_samples(checked):
-    """Uniform samples for fit_gearset and checks {key: (angle, row values)} for fit_notes."""
-    n = N_SAMPLES
-    samples, checks = {}, {}
-    for key in MESH_SERIES:
-        three = resample(checked.psi, checked.values[key], 3 * n).reshape(3, n)
-        samples[key] = three.mean(axis=0)  # the three pitches averaged: one mesh cycle in θ
-        _check_pitch(checked, key, three)
-        checks[key] = (3.0 * checked.psi, checked.values[key])
-    for key in PAIR_SERIES:
-        if key not in checked.values:  # the optional contact point velocity
-            continue
-        samples[key] = resample(checked.psi, checked.values[key], n)
-        checks[key] = (checked.psi, checked.values[key])
-    _check_load_sum(checked, samples["ls"])
-    return samples, checks
-
-
-def _check_load_sum(checked, ls):
-    """The shares of the three pairs, ls(ψ) + ls(ψ + 2π/3) + ls(ψ + 4π/3), must sum to 1."""
-    n = len(ls)
-    total = ls + np.roll(ls, -n // 3) + np.roll(ls, -2 * n // 3)
-    worst = int(np.argmax(np.abs(total - 1.0)))
-    if abs(total[worst] - 1.0) > LS_SUM_TOL:
-        phi_deg = math.degrees(3.0 * grid(n)[worst] / checked.N_p)
-        _fail(checked.path, None, "ls", None,
-              f"the load shares of the three pairs (the tabulated one and the same one and two "
-              f"angular pitches later) sum to {total[worst]:.3g} at phi_p = {phi_deg:.4g} deg "
-              f"(mod one period); they must sum to 1 within {LS_SUM_TOL}")
-
-
-def _check_pitch(checked, key, three):
-    """Mesh quantities must repeat every angular pitch, else N_p does not fit the table."""
-    mean = three.mean(axis=0)
-    diff = np.abs(three - mean).max()
-    allowed = PITCH_TOL[0] * np.ptp(mean) + PITCH_TOL[1] * np.abs(mean).max()
-    if diff > allowed:
-        column = next(c for c, (k, _) in MESH_COLUMNS.items() if k == key)
-        _fail(checked.path, None, column, None,
-              f"does not repeat every angular pitch (360/N_p deg) with N_p = {checked.N_p}: "
-              f"pitch-to-pitch difference {diff:.3g} {UNITS[key]}, allowed {allowed:.3g}; "
-              "check N_p")
-
-
-def import_table(path, speed_rpm=None, harmonics=HARMONICS, contact_harmonics=CONTACT_HARMONICS,
-                 name=None):
-    """A Gearset from the user's TCA table at `path` (docs/tca-import.md)."""
-    checked = check_table(read_table(path), speed_rpm, harmonics, contact_harmonics)
-    samples, checks = table_samples(checked)
-    series = fit_gearset(samples, harmonics, contact_harmonics)
-    comments = [
-        f"Imported from the TCA table {os.path.basename(path)} by `hypoid tca import`; "
-        "format docs/tca-import.md.",
-        f"Pinion speed of the tabulated velocities {checked.speed_rpm:g} rpm; "
-        f"{len(checked.lines)} rows over one period (3 angular pitches).",
-        f"Fit (docs/physics.md §10.7): resampled to {N_SAMPLES} points per period (cubic splines), "
-        f"{harmonics} harmonics for k_m, R_p, e_0, ls",
-        f"  and {contact_harmonics} for the contact series, bridged outside contact by a C2 "
-        "quintic.",
-        "Units SI (m, N/m, rad); series format in docs/data-files.md.",
-    ]
-    notes = fit_notes(series, checks, "the table rows")
-    return Gearset(name or checked.name, checked.N_p, checked.N_g, series, comments, notes)
-
-
-# --- several tables: both flanks at several torques (docs/tca-import.md) ----------------------
-
-def _table_load(table):
-    """(flank, torque [N·m] or None, line of the torque row) from a table's metadata."""
-    line, flank = table.meta.get("flank", (None, "drive"))
-    if flank not in FLANK_NAMES:
-        _fail(table, line, None, flank, "flank must be 'drive' or 'coast'")
-    if "torque_Nm" not in table.meta:
-        return flank, None, None
-    t_line, text = table.meta["torque_Nm"]
-    torque = _to_float(text)
-    if not (math.isfinite(torque) and torque >= 0.0):
-        _fail(table, t_line, None, text, "torque_Nm must be a pinion torque >= 0 [N·m]")
-    return flank, torque, t_line
-
-
-def _one_gear_set(tables):
-    """Every table must describe the same gear set: equal N_p and N_g."""
-    first = tables[0]
-    for table in tables[1:]:
-        for key in ("N_p", "N_g"):
-            if _meta_int(table, key) != _meta_int(first, key):
-                _fail(table, table.meta[key][0], None, table.meta[key][1],
-                      f"{key} differs from {_meta_int(first, key)} in {first.path}: the flanks "
-                      "and torque levels must describe one gear set (one period, three pairs)")
-
-
-def _levels(tables):
-    """{(flank, torque): table} and the drive flank's increasing torque levels."""
-    by_load = {}
-    for table in tables:
-        flank, torque, line = _table_load(table)
-        if torque is None:
-            _fail(table, None, None, None, "several tables need a 'torque_Nm,<pinion torque>' row "
-                  "each (and 'flank,coast' for the back flank's)")
-        if (flank, torque) in by_load:
-            _fail(table, line, None, torque, f"a second {flank} table at {torque:g} N·m "
-                  f"(the first is {by_load[(flank, torque)].path})")
-        by_load[(flank, torque)] = table
-    levels = sorted(t for f, t in by_load if f == "drive")
-    if not levels:
-        _fail(tables[0], None, None, None, "no drive-flank table ('flank,drive' or no flank row)")
-    for (flank, torque), table in by_load.items():
-        if flank == "coast" and torque not in levels:
-            _fail(table, table.meta["torque_Nm"][0], None, torque,
-                  f"a coast table at {torque:g} N·m but no drive table there (drive levels: "
-                  f"{', '.join(f'{t:g}' for t in levels)} N·m): both flanks need the same levels")
-    coast = [t for f, t in by_load if f == "coast"]
-    if coast and len(coast) != len(levels):
-        missing = [t for t in levels if t not in coast]
-        at = ", ".join(f"{t:g}" for t in missing)
-        _fail(tables[0], None, None, None, f"coast tables missing at {at} N·m: with any coast "
-              "table every torque level needs one")
-    if len(levels) > MAX_LEVELS:
-        _fail(tables[0], None, None, None, f"{len(levels)} torque levels: at most {MAX_LEVELS}")
-    return by_load, levels
-
-
-def import_tables(paths, speed_rpm=None, harmonics=HARMONICS, contact_harmonics=CONTACT_HARMONICS,
-                  name=None):
-    """A Gearset from one table, or a layered one from tables of several torques and flanks."""
-    tables = [read_table(p) for p in paths]
-    if len(tables) == 1 and not {"torque_Nm", "flank"} & set(tables[0].meta):
-        return import_table(paths[0], speed_rpm, harmonics, contact_harmonics, name)
-    _one_gear_set(tables)
-    by_load, levels = _levels(tables)
-    flanks = tuple(f for f in FLANK_NAMES if any(k[0] == f for k in by_load))
-    layers, notes = {}, {}
-    for (flank, torque), table in by_load.items():
-        checked = check_table(table, speed_rpm, harmonics, contact_harmonics)
-        samples, checks = table_samples(checked)
-        series = fit_gearset(samples, harmonics, contact_harmonics)
-        level = levels.index(torque) + 1
-        layers[(flank, level)] = {k: series[k] for k in FLANK_SERIES if k in series}
-        for key, note in fit_notes(series, checks, "the table rows").items():
-            notes[f"{flank}.{level}.{key}"] = note
-        if (flank, level) == ("drive", 1):
-            e_0, first = series["e_0"], checked
-    comments = [
-        f"Imported from {len(tables)} TCA tables by `hypoid tca import`; format docs/tca-import.md.",
-        "Flanks " + " and ".join(flanks) + " at pinion torques "
-        + ", ".join(f"{t:g}" for t in levels) + " N·m; e_0 from the drive table at "
-        f"{levels[0]:g} N·m ({os.path.basename(first.path)}).",
-        f"Fit (docs/physics.md §10.7): {N_SAMPLES} points per period, {harmonics} harmonics for "
-        f"k_m, R_p, e_0, ls and {contact_harmonics} for the contact series.",
-        "Units SI (m, N/m, rad); series format in docs/data-files.md.",
-    ]
-    return Gearset(name or first.name, first.N_p, first.N_g, {"e_0": e_0}, comments, notes,
-                   torque_levels=tuple(levels), flanks=flanks, layers=layers)

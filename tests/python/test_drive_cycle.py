@@ -140,7 +140,7 @@ def test_wltc_launch_energy_audit_closes_to_1e_6():
     with `hypoid drive-cycle --no-warm --set rtol=1e-8`)."""
     cycle = cycles.builtin_cycle("wltc3")
     run = runner.simulate(cycle, ROOT / "build" / "HypoidGearPair.fmu",
-                              runner.DEFAULT_VEHICLE_FMU, "fast", 293.15, 293.15, 0.05,
+                              VEHICLE_FMU, "fast", 293.15, 293.15, 0.05,
                               {"rtol": 1e-8}, "cold", until=60.0)
     s = summary.summarise(run, cycle, 0.05)
     assert s["energy_into_axle_J"] > 1e5 and np.max(run.rows["v"]) > 5.0
@@ -162,7 +162,7 @@ def launch_after_a_stop():
 
 def launch_run(extra, gear_fmu=ROOT / "build" / "HypoidGearPair.fmu"):
     cycle = launch_after_a_stop()
-    run = runner.simulate(cycle, gear_fmu, runner.DEFAULT_VEHICLE_FMU, "full", 293.15,
+    run = runner.simulate(cycle, gear_fmu, VEHICLE_FMU, "full", 293.15,
                               293.15, 0.05, extra, "cold")
     return run, summary.summarise(run, cycle, 0.05)
 
@@ -227,7 +227,7 @@ def test_libcosim_and_fmpy_masters_agree_on_the_axle_loss(tmp_path, capsys):
     (got,) = lc["runs"]
     cycle = cycles.builtin_cycle("wltc3")
     run = runner.simulate(cycle, ROOT / "build" / "HypoidGearPair.fmu",
-                              runner.DEFAULT_VEHICLE_FMU, "fast", 293.15, 293.15, 0.05, {},
+                              VEHICLE_FMU, "fast", 293.15, 293.15, 0.05, {},
                               "cold", until=30.0)
     ref = summary.summarise(run, cycle, 0.05)
     assert run.rows["time"][-1] == pytest.approx(30.0)
@@ -249,7 +249,7 @@ def test_until_shorter_than_a_step_is_refused(tmp_path, capsys):
 def first_100_s(level):
     """The summary of the first 100 s of WLTC class 3 from a cold start at a level."""
     cycle, fmu = cycles.builtin_cycle("wltc3"), ROOT / "build" / "HypoidGearPair.fmu"
-    run = runner.simulate(cycle, fmu, runner.DEFAULT_VEHICLE_FMU, level, 293.15, 293.15,
+    run = runner.simulate(cycle, fmu, VEHICLE_FMU, level, 293.15, 293.15,
                               0.05, {}, level, until=100.0)
     return summary.summarise(run, cycle, 0.05)
 

@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 from hypoid.tca import gearsets as tca
+from hypoid.tca import table_import
 from hypoid.tca.gearset_file import GearsetFileError, read_gearset, write_gearset
 from hypoid.fmu.instance import FmuError, Instance
 
@@ -145,7 +146,7 @@ def _table(tmp_path, name, torque, flank="drive", k_scale=1.0, N_p=None):
 def test_import_of_torque_levels_and_both_flanks(tmp_path):
     paths = [_table(tmp_path, "d100.csv", 100, k_scale=2.0), _table(tmp_path, "d25.csv", 25),
              _table(tmp_path, "c25.csv", 25, "coast"), _table(tmp_path, "c100.csv", 100, "coast")]
-    g = tca.import_tables(paths)
+    g = table_import.import_tables(paths)
     assert g.torque_levels == (25.0, 100.0) and g.flanks == ("drive", "coast")
     ratio = g.layers[("drive", 2)]["k_m"].mean / g.layers[("drive", 1)]["k_m"].mean
     assert ratio == pytest.approx(2.0, rel=1e-9)
@@ -167,7 +168,7 @@ def test_import_of_torque_levels_and_both_flanks(tmp_path):
 def test_import_refuses_tables_that_disagree(tmp_path, tables, words):
     paths = [_table(tmp_path, n, t, f, N_p=p) for n, t, f, p in tables]
     with pytest.raises(ValueError) as info:
-        tca.import_tables(paths)
+        table_import.import_tables(paths)
     for w in words:
         assert w in str(info.value), (w, str(info.value))
 

@@ -9,7 +9,10 @@ import numpy as np
 import pytest
 from fmpy import simulate_fmu
 
+from hypoid.cli import tca as tca_cli
 from hypoid.tca import gearsets as tca
+from hypoid.tca.table import TableError
+from hypoid.tca import table_import
 from hypoid.tca.gearset_file import Gearset, GearsetFileError, Series, read_gearset, write_gearset
 from hypoid.fmu.variables import ENUMERATIONS
 
@@ -93,7 +96,7 @@ def test_moving_contact_thins_the_film_of_the_ehl_model(fmu_path, tmp_path):
 def exported(tmp_path, edit=None):
     """The surrogate of set 1 as a TCA table (relative velocities and vc columns)."""
     path = tmp_path / "table.csv"
-    assert tca.main(["export-csv", "--set", "1", "--out", str(path), "--rows", "360"]) == 0
+    assert tca_cli.main(["export-csv", "--set", "1", "--out", str(path), "--rows", "360"]) == 0
     if edit:
         lines = path.read_text().splitlines()
         lines = edit(lines)
@@ -123,22 +126,22 @@ def add_material(lines, spoil=None):
 
 
 def test_import_turns_relative_velocities_into_material_ones(tmp_path):
-    imported = tca.import_table(exported(tmp_path))
+    imported = table_import.import_table(exported(tmp_path))
     direct = tca.surrogate(1)
     for key in ("up_x", "up_y", "ug_x", "ug_y", "vc_x", "vc_y"):
         assert imported.series[key].mean == pytest.approx(direct.series[key].mean, rel=2e-3), key
 
 
 def test_consistent_velocity_sets_are_accepted(tmp_path):
-    both = tca.import_table(exported(tmp_path, add_material))
+    both = table_import.import_table(exported(tmp_path, add_material))
     assert both.series["up_x"].mean == pytest.approx(tca.surrogate(1).series["up_x"].mean,
                                                      rel=2e-3)
 
 
 def test_contradicting_velocity_sets_name_file_line_and_value(tmp_path):
     path = exported(tmp_path, lambda lines: add_material(lines, spoil=12))
-    with pytest.raises(tca.TableError) as err:
-        tca.import_table(path)
+    with pytest.raises(TableError) as err:
+        table_import.import_table(path)
     text = str(err.value)
     assert str(path) in text and "line 13" in text and "ugm_x_m_s" in text
     assert "contradict" in text
@@ -150,8 +153,8 @@ def test_velocity_columns_go_together(tmp_path):
         j = lines[head].split(",").index("vc_y_m_s")
         return lines[:head] + [",".join(c for n, c in enumerate(ln.split(",")) if n != j)
                                for ln in lines[head:]]
-    with pytest.raises(tca.TableError, match="vc_y_m_s"):
-        tca.import_table(exported(tmp_path, drop_vc_y))
+    with pytest.raises(TableError, match="vc_y_m_s"):
+        table_import.import_table(exported(tmp_path, drop_vc_y))
 
 
 def test_the_contact_point_velocity_comes_as_a_pair(tmp_path):

@@ -10,6 +10,7 @@ import pytest
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 
 from hypoid import lubricant as lub  # noqa: E402
+from hypoid.cli import lubricant as lub_cli  # noqa: E402
 
 REPO = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 
@@ -76,7 +77,7 @@ def test_written_file(tmp_path):
     argv = ["--name", "My oil", "--kv40", "100", "--kv100", "15", "--rho15", "870",
             "--alpha-star", "16.09", "11.59", "9.38", "--hn-lambda", "7.9e-8", "--hn-alpha",
             "0.7", "--k-f", "0.18", "-o", str(out)]
-    assert lub.main(argv) == 0
+    assert lub_cli.main(argv) == 0
     header, v = parse(out.read_text())
     assert header == "hypoid-lubricant 1"
     assert set(v) == {"name", "vogel_a", "vogel_b", "vogel_c", "alpha_star_T1", "alpha_star_1",
@@ -91,7 +92,7 @@ def test_written_file(tmp_path):
 
 def test_builtin_files_are_current(tmp_path):
     """resources/lubricants/ holds exactly what --builtin writes (regenerate if this fails)."""
-    assert lub.main(["--builtin", "--out-dir", str(tmp_path)]) == 0
+    assert lub_cli.main(["--builtin", "--out-dir", str(tmp_path)]) == 0
     for name in ("OS265962", "OS265963"):
         fresh = (tmp_path / f"{name}.txt").read_text()
         with open(os.path.join(REPO, "resources", "lubricants", f"{name}.txt")) as fh:
@@ -201,7 +202,7 @@ def test_k_f_estimates():
 
 def test_data_sheet_alone_writes_a_marked_file(tmp_path, capsys):
     out = tmp_path / "sheet.txt"
-    assert lub.main(SHEET + ["-o", str(out)]) == 0
+    assert lub_cli.main(SHEET + ["-o", str(out)]) == 0
     assert "estimated: alpha_star_1" in capsys.readouterr().out
     text = out.read_text()
     assert text.endswith("\n") and not text.endswith("\n\n")
@@ -217,7 +218,7 @@ def test_data_sheet_alone_writes_a_marked_file(tmp_path, capsys):
     assert float(v["hn_lambda"]) == 7.95e-8 and float(v["hn_alpha"]) == 0.835
     assert float(v["k_f"]) == 0.1302
     # a value given on the command line is used as given and not marked
-    assert lub.main(SHEET + ["--k-f", "0.15", "--base-oil", "synthetic", "-o", str(out)]) == 0
+    assert lub_cli.main(SHEET + ["--k-f", "0.15", "--base-oil", "synthetic", "-o", str(out)]) == 0
     text = out.read_text()
     assert "k_f 0.15    # W/(m K)\n" in text
     assert "synthetic base oil" in text
@@ -227,7 +228,7 @@ def test_data_sheet_file_runs_in_the_fmu(tmp_path, harness):
     """A lubricant written from KV40, KV100 and rho15 alone loads and runs in the FMU; its
     friction is of the gear-oil magnitude and differs from the built-in oil's (its file is read)."""
     out = tmp_path / "sheet.txt"
-    assert lub.main(SHEET + ["-o", str(out)]) == 0
+    assert lub_cli.main(SHEET + ["-o", str(out)]) == 0
 
     def mean_mu(**values):
         h = harness()

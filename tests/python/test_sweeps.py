@@ -256,7 +256,7 @@ def test_a_signal_ends_the_sweep_and_its_workers(tmp_path, fmu_path, signum):
 
 def test_negative_numbers_in_list_options_are_values():
     """Before, `--temperatures-c -10,20` was read as an unknown option."""
-    from hypoid.maps import effmap
+    from hypoid.cli import effmap
 
     args = effmap._parser().parse_args(["--out", "m.txt", "--temperatures-c", "-10,20",
                                         "--torques", "-50:50:50"])

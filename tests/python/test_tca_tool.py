@@ -12,7 +12,11 @@ import re
 import numpy as np
 import pytest
 
-from hypoid.tca import gearsets as tca, fit as tca_fit
+from hypoid.cli import tca as tca_cli
+from hypoid.tca import fit as tca_fit
+from hypoid.tca import gearsets as tca
+from hypoid.tca.table import TableError
+from hypoid.tca import table_import
 from hypoid.tca import surrogate as sur
 from hypoid.tca.gearset_file import (CONTACT_SERIES, MESH_SERIES, PAIR_SERIES, GearsetFileError,
                                  read_gearset)
@@ -341,7 +345,7 @@ def test_written_files_follow_the_data_file_format(n):
 
 
 def test_written_files_are_up_to_date(tmp_path):
-    assert tca.main(["surrogate", "--all", "--out-dir", str(tmp_path)]) == 0
+    assert tca_cli.main(["surrogate", "--all", "--out-dir", str(tmp_path)]) == 0
     for n in SETS:
         with open(tmp_path / f"gearset{n}.txt", encoding="utf-8") as new, \
                 open(os.path.join(GEARSETS, f"gearset{n}.txt"), encoding="utf-8") as old:
@@ -399,8 +403,8 @@ def test_reader_rejects_broken_files(tmp_path, edit, message):
 @pytest.mark.parametrize("n", SETS)
 def test_round_trip_surrogate_csv_import(tmp_path, n):
     table, out = tmp_path / "table.csv", tmp_path / "imported.txt"
-    assert tca.main(["export-csv", "--set", str(n), "--out", str(table), "--rows", "720"]) == 0
-    assert tca.main(["import", str(table), "--out", str(out)]) == 0
+    assert tca_cli.main(["export-csv", "--set", str(n), "--out", str(table), "--rows", "720"]) == 0
+    assert tca_cli.main(["import", str(table), "--out", str(out)]) == 0
     imported, direct = read_gearset(out), tca.surrogate(n)
     g, psi = gear_set(n), off_grid()
     inside = sur.pair_xi(g, psi) <= 1.0
@@ -415,7 +419,7 @@ def test_round_trip_surrogate_csv_import(tmp_path, n):
 def test_fixture_table_imports_with_small_fit_errors():
     """The 96-row fixture: fit errors at its rows as for the surrogate, but e_0 (32 rows per pitch,
     10 digits) is only reproduced to 1e-5 of its amplitude."""
-    gearset = tca.import_table(FIXTURE)
+    gearset = table_import.import_table(FIXTURE)
     assert (gearset.N_p, gearset.N_g) == (13, 36)
     tolerance = dict(FIT_TOLERANCE, e_0=1e-5)
     for key, note in gearset.notes.items():
@@ -424,8 +428,8 @@ def test_fixture_table_imports_with_small_fit_errors():
 
 
 def test_speed_option_scales_the_velocities(tmp_path):
-    half = tca.import_table(FIXTURE, speed_rpm=4000.0).series["up_x"]
-    full = tca.import_table(FIXTURE).series["up_x"]
+    half = table_import.import_table(FIXTURE, speed_rpm=4000.0).series["up_x"]
+    full = table_import.import_table(FIXTURE).series["up_x"]
     assert half.mean == pytest.approx(full.mean / 2, rel=1e-12)
 
 
@@ -506,8 +510,8 @@ BAD_TABLES = [
 @pytest.mark.parametrize("edit, problem, words", BAD_TABLES)
 def test_bad_tables_give_clear_errors(tmp_path, edit, problem, words):
     path = edit_table(tmp_path, edit)
-    with pytest.raises(tca.TableError) as err:
-        tca.import_table(path)
+    with pytest.raises(TableError) as err:
+        table_import.import_table(path)
     message = str(err.value)
     assert message.startswith(str(path)) and problem in message
     for word in words:
@@ -525,15 +529,15 @@ def test_bad_radii_and_contact_cells_give_clear_errors(tmp_path):
         (set_cell("r_py_mm", r, "1"), "mm > R_y = 0.9998 mm", "r_px_mm"),
     ]
     for edit, problem, column in cases:
-        with pytest.raises(tca.TableError, match=re.escape(problem)) as err:
-            tca.import_table(edit_table(tmp_path, edit))
+        with pytest.raises(TableError, match=re.escape(problem)) as err:
+            table_import.import_table(edit_table(tmp_path, edit))
         assert f"line {line}" in str(err.value) and column in str(err.value)
 
 
 def test_loaded_row_without_contact_data_is_an_error(tmp_path):
     path = edit_table(tmp_path, set_cell("ls", 90, "0.3"))  # row 90 is out of contact
-    with pytest.raises(tca.TableError, match=r"line 99.*blank contact data but ls = 0.3"):
-        tca.import_table(path)
+    with pytest.raises(TableError, match=r"line 99.*blank contact data but ls = 0.3"):
+        table_import.import_table(path)
 
 
 def blank_contact_row(row):
@@ -561,12 +565,12 @@ def halve_load_shares(lines):
 
 
 def test_contact_and_load_share_consistency_errors(tmp_path):
-    with pytest.raises(tca.TableError, match=r"line 50: the tabulated pair must be in contact over "
+    with pytest.raises(TableError, match=r"line 50: the tabulated pair must be in contact over "
                                              r"one range of angles \(found 2; this row starts"):
-        tca.import_table(edit_table(tmp_path, blank_contact_row(40)))
-    with pytest.raises(tca.TableError, match=r"column 'ls': the load shares of the three pairs .* "
+        table_import.import_table(edit_table(tmp_path, blank_contact_row(40)))
+    with pytest.raises(TableError, match=r"column 'ls': the load shares of the three pairs .* "
                                              r"sum to 0.5 at phi_p"):
-        tca.import_table(edit_table(tmp_path, halve_load_shares))
+        table_import.import_table(edit_table(tmp_path, halve_load_shares))
 
 
 def test_table_may_start_inside_contact(tmp_path):
@@ -577,8 +581,8 @@ def test_table_may_start_inside_contact(tmp_path):
         moved = [f"{float(ln.split(',', 1)[0]) + period!r},{ln.split(',', 1)[1]}"
                  for ln in lines[h + 1:h + 31]]
         return lines[:h + 1] + lines[h + 31:] + moved
-    rotated = tca.import_table(edit_table(tmp_path, rotate))
-    plain, psi = tca.import_table(FIXTURE), off_grid()
+    rotated = table_import.import_table(edit_table(tmp_path, rotate))
+    plain, psi = table_import.import_table(FIXTURE), off_grid()
     for key, s in plain.series.items():
         np.testing.assert_allclose(rotated.series[key](psi), s(psi), rtol=0,
                                    atol=1e-6 * np.abs(s(psi)).max(), err_msg=key)
@@ -612,8 +616,8 @@ def test_a_column_off_by_a_thousand_names_the_unit_mix_up(tmp_path, columns, fac
     """Before, R_p in metres under the mm header imported (1000x small) and the FMU then failed
     with ARK_TOO_MUCH_WORK."""
     path = edit_table(tmp_path, scale_column(*columns, factor=factor))
-    with pytest.raises(tca.TableError) as err:
-        tca.import_table(path)
+    with pytest.raises(TableError) as err:
+        table_import.import_table(path)
     for w in words + ["implausible", "line "]:
         assert w in str(err.value), (w, str(err.value))
 
@@ -639,15 +643,15 @@ def test_import_of_a_semicolon_separated_table(tmp_path):
     """Spreadsheets in locales with a decimal comma write ';' between cells and
     ',' as the decimal mark; such a table imports like the comma-separated original."""
     table = tmp_path / "set1.csv"
-    assert tca.main(["export-csv", "--set", "1", "--out", str(table), "--rows", "360"]) == 0
+    assert tca_cli.main(["export-csv", "--set", "1", "--out", str(table), "--rows", "360"]) == 0
     text = table.read_text()
     european = tmp_path / "set1_semicolons.csv"
     european.write_text("\n".join(line if line.startswith("#") else
                                   line.replace(",", ";").replace(".", ",")
                                   for line in text.splitlines()) + "\n")
     a, b = tmp_path / "a.txt", tmp_path / "b.txt"
-    assert tca.main(["import", str(table), "--out", str(a)]) == 0
-    assert tca.main(["import", str(european), "--out", str(b)]) == 0
+    assert tca_cli.main(["import", str(table), "--out", str(a)]) == 0
+    assert tca_cli.main(["import", str(european), "--out", str(b)]) == 0
     assert a.read_text().replace(table.name, "") == b.read_text().replace(european.name, "")
 
 

@@ -14,7 +14,7 @@ import pytest
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 
 from hypoid import paths  # noqa: E402
-from hypoid.study import scenario
+from hypoid.cli import run as run_cli  # noqa: E402
 from hypoid.fmu.instance import normalize  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -50,7 +50,7 @@ def test_run_with_a_relative_lubricant_file(user_dir, fmu_path):
     common = ["--fmu", str(fmu_path), "--stop-time", "0.01", "--output-interval", "1e-3"]
 
     def loss(out, *values):
-        assert scenario.main(common + ["--out", out, "--set", *values]) == 0
+        assert run_cli.main(common + ["--out", out, "--set", *values]) == 0
         found = list((user_dir / out).glob("*/summary.json"))
         assert len(found) == 1, found
         return json.loads(found[0].read_text())["P_loss_mean_W"]

@@ -109,11 +109,11 @@ def test_elastic_deflection_of_the_simpler_meshes(harness, mesh_model, check):
 
 def test_hypoid_run_shows_the_warnings(tmp_path, fmu_path, capsys):
     """`hypoid run` passes the FMU's set-up warnings on to the user and into summary.json."""
-    from hypoid.study import scenario
+    from hypoid.cli import run as run_cli
 
     argv = ["--fmu", str(fmu_path), "--out", str(tmp_path), "--stop-time", "0.005",
             "--set", "w_set=1500", "w_p0=150"]
-    assert scenario.main(argv) == 0
+    assert run_cli.main(argv) == 0
     err = capsys.readouterr().err
     assert "hypoid run: FMU warning: w_set = 1500 rad/s (14324 rpm)" in err
     (summary,) = tmp_path.glob("*/summary.json")
