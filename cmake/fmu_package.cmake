@@ -43,15 +43,23 @@ if(WIN32 OR HG_WIN64_DLL OR HG_WIN64_VEHICLE_DLL)
   hg_licenses(HG_LICENSES_WIN64 "${HG_MINGW_LICENSE}=mingw-w64-copyright.txt")
 endif()
 
-# hg_fmu(TARGET FILE fmu STAGE dir XML xml BINARY target [WIN64_DLL dll] [RESOURCES dir]
-#        LICENSES FILE=NAME...)
-# FILE zips STAGE: XML as modelDescription.xml, BINARY's library under binaries/<platform>/
-# (copied there unless it is built there), WIN64_DLL under binaries/win64/ (Linux builds),
-# RESOURCES as resources/, the LICENSES (and HG_LICENSES_WIN64 with a win64 binary) under
+# hg_fmu(TARGET FILE fmu STAGE dir XML xml BINARY target [PLATFORM name] [WIN64_DLL dll]
+#        [WIN64_PLATFORM name] [RESOURCES dir] [EXTRA dir] LICENSES FILE=NAME...)
+# FILE zips STAGE: XML as modelDescription.xml, BINARY's library under binaries/<PLATFORM>/
+# (HG_PLATFORM unless given; copied there unless it is built there), WIN64_DLL under
+# binaries/<WIN64_PLATFORM>/ (win64 unless given; Linux builds), RESOURCES as resources/, EXTRA
+# as extra/, the LICENSES (and HG_LICENSES_WIN64 with a win64 binary) under
 # documentation/licenses/. TARGET (in ALL) makes it.
 function(hg_fmu target)
-  cmake_parse_arguments(F "" "FILE;STAGE;XML;BINARY;WIN64_DLL;RESOURCES" "LICENSES" ${ARGN})
-  set(_bin "${F_STAGE}/binaries/${HG_PLATFORM}")
+  cmake_parse_arguments(F "" "FILE;STAGE;XML;BINARY;PLATFORM;WIN64_DLL;WIN64_PLATFORM;RESOURCES;EXTRA"
+                        "LICENSES" ${ARGN})
+  if(NOT F_PLATFORM)
+    set(F_PLATFORM ${HG_PLATFORM})
+  endif()
+  if(NOT F_WIN64_PLATFORM)
+    set(F_WIN64_PLATFORM win64)
+  endif()
+  set(_bin "${F_STAGE}/binaries/${F_PLATFORM}")
   set(_deps ${F_BINARY} "${F_XML}")
   set(_zip modelDescription.xml binaries documentation)
   set(_cmds COMMAND ${CMAKE_COMMAND} -E copy "${F_XML}" "${F_STAGE}/modelDescription.xml")
@@ -66,23 +74,27 @@ function(hg_fmu target)
   endif()
   set(_licenses ${F_LICENSES})
   if(NOT WIN32)
-    list(APPEND _cmds COMMAND ${CMAKE_COMMAND} -E rm -rf "${F_STAGE}/binaries/win64")
+    list(APPEND _cmds COMMAND ${CMAKE_COMMAND} -E rm -rf "${F_STAGE}/binaries/${F_WIN64_PLATFORM}")
     if(F_WIN64_DLL)
-      list(APPEND _cmds COMMAND ${CMAKE_COMMAND} -E make_directory "${F_STAGE}/binaries/win64"
-           COMMAND ${CMAKE_COMMAND} -E copy "${F_WIN64_DLL}" "${F_STAGE}/binaries/win64/")
+      list(APPEND _cmds
+           COMMAND ${CMAKE_COMMAND} -E make_directory "${F_STAGE}/binaries/${F_WIN64_PLATFORM}"
+           COMMAND ${CMAKE_COMMAND} -E copy "${F_WIN64_DLL}" "${F_STAGE}/binaries/${F_WIN64_PLATFORM}/")
       list(APPEND _deps "${F_WIN64_DLL}")
       list(APPEND _licenses ${HG_LICENSES_WIN64})
     endif()
   else()
     list(APPEND _licenses ${HG_LICENSES_WIN64})
   endif()
-  if(F_RESOURCES)
-    file(GLOB_RECURSE _res CONFIGURE_DEPENDS "${F_RESOURCES}/*")
-    list(APPEND _cmds COMMAND ${CMAKE_COMMAND} -E rm -rf "${F_STAGE}/resources"
-         COMMAND ${CMAKE_COMMAND} -E copy_directory "${F_RESOURCES}" "${F_STAGE}/resources")
-    list(APPEND _deps ${_res})
-    list(APPEND _zip resources)
-  endif()
+  foreach(_kind resources extra) # RESOURCES -> resources/, EXTRA -> extra/
+    string(TOUPPER ${_kind} _arg)
+    if(F_${_arg})
+      file(GLOB_RECURSE _files CONFIGURE_DEPENDS "${F_${_arg}}/*")
+      list(APPEND _cmds COMMAND ${CMAKE_COMMAND} -E rm -rf "${F_STAGE}/${_kind}"
+           COMMAND ${CMAKE_COMMAND} -E copy_directory "${F_${_arg}}" "${F_STAGE}/${_kind}")
+      list(APPEND _deps ${_files})
+      list(APPEND _zip ${_kind})
+    endif()
+  endforeach()
   set(_lic_dir "${F_STAGE}/documentation/licenses")
   list(APPEND _cmds COMMAND ${CMAKE_COMMAND} -E rm -rf "${_lic_dir}"
        COMMAND ${CMAKE_COMMAND} -E make_directory "${_lic_dir}")

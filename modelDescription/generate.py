@@ -4,6 +4,7 @@ variables.toml, the single source of the FMU's variables.
 
     generate.py --toml variables.toml --xml OUT.xml --c-dir DIR     (called by CMake)
     generate.py --toml variables.toml --xml-intenum OUT.xml          (the integer-coded variant)
+    generate.py --toml variables.toml --xml3 OUT.xml                 (the FMI 3.0 one)
     generate.py --toml variables.toml --readme README.md [--check]  (README table)
     generate.py --toml variables.toml --python hypoid/fmu/variables.py [--check]  (Python table)
 
@@ -114,6 +115,20 @@ def xml_types(spec):
     return out
 
 
+def xml_value_attrs(v):
+    """The unit, displayUnit, min and max attributes of a variable (both FMI versions)."""
+    out = ""
+    if v["base"] == "Real":
+        if v.get("unit"):
+            out += f' unit={quoteattr(v["unit"])}'
+        if v.get("displayUnit"):
+            out += f' displayUnit={quoteattr(v["displayUnit"])}'
+    for key in ("min", "max"):
+        if key in v:
+            out += f' {key}="{fmt_num(v[key])}"'
+    return out
+
+
 def xml_variable(vr, v, enums):
     causality, variability, initial = GROUPS[v["group"]]
     if v["group"] == "output" and v["base"] != "Real":
@@ -126,14 +141,7 @@ def xml_variable(vr, v, enums):
     tattrs = ""
     if v["typ"] in enums:
         tattrs += f' declaredType={quoteattr(v["typ"])}'
-    if v["base"] == "Real":
-        if v.get("unit"):
-            tattrs += f' unit={quoteattr(v["unit"])}'
-        if v.get("displayUnit"):
-            tattrs += f' displayUnit={quoteattr(v["displayUnit"])}'
-    for key in ("min", "max"):
-        if key in v:
-            tattrs += f' {key}="{fmt_num(v[key])}"'
+    tattrs += xml_value_attrs(v)
     if v["group"] in ("input", "parameter"):
         start = v["start"]
         if v["base"] == "Boolean":
@@ -218,6 +226,119 @@ def write_xml_intenum(spec, path):
     write_xml(intenum_spec(spec), path)
 
 
+# ---------------------------------------------------------------- FMI 3.0 modelDescription.xml
+# The same variables with FMI 3.0's types (Float64, Int32, Enumeration, Boolean, String), each
+# per-pair output as one array variable ("pair.W", Dimension 3), the independent variable time.
+# Value references: a scalar keeps its FMI 2.0 one, an array takes its first element's, time
+# the one after the last (HG_FMI3_VR_TIME), so the C table serves both versions.
+
+FMI3_TYPES = {"Real": "Float64", "Integer": "Int32", "Boolean": "Boolean", "String": "String"}
+
+
+def fmi3_guid(spec):
+    return "{" + str(uuid.uuid5(uuid.NAMESPACE_URL, "hypoidgearpair-fmi3:" + spec.digest)) + "}"
+
+
+def fmi3_variables(spec):
+    """[(vr, variable, count)]: each FMI 3.0 variable, count its elements (1 for a scalar)."""
+    out = []
+    for vr, v in enumerate(spec.vars):
+        if not v.get("array"):
+            out.append((vr, v, 1))
+        elif "[1]" in v["name"]:  # an array's first element names the array
+            out.append((vr, dict(v, name=v["name"].replace("[1]", "")), v["array"]))
+    return out
+
+
+def xml3_types(spec):
+    out = ["  <TypeDefinitions>"]
+    for name, items in spec.enums.items():
+        out.append(f"    <EnumerationType name={quoteattr(name)}>")
+        for i, (iname, idesc) in enumerate(items, 1):
+            out.append(f"      <Item name={quoteattr(iname)} value=\"{i}\" "
+                       f"description={quoteattr(idesc)}/>")
+        out.append("    </EnumerationType>")
+    out.append("  </TypeDefinitions>")
+    return out if spec.enums else []
+
+
+def xml3_variable(vr, v, count, enums):
+    causality, variability, initial = GROUPS[v["group"]]
+    if v["group"] == "output" and v["base"] != "Real":
+        variability = "discrete"
+    elem = "Enumeration" if v["typ"] in enums else FMI3_TYPES[v["base"]]
+    attrs = f'name={quoteattr(v["name"])} valueReference="{vr}" causality="{causality}" ' \
+            f'variability="{variability}"'
+    if initial:
+        attrs += f' initial="{initial}"'
+    attrs += f' description={quoteattr(v["description"])}'
+    if v["typ"] in enums:
+        attrs += f' declaredType={quoteattr(v["typ"])}'
+    attrs += xml_value_attrs(v)
+    children = [f'      <Dimension start="{count}"/>'] if count > 1 else []
+    if v["group"] in ("input", "parameter"):
+        start = v["start"]
+        if v["base"] == "String":
+            children.append(f"      <Start value={quoteattr(str(start))}/>")
+        else:
+            if v["base"] == "Boolean":
+                start = "true" if start else "false"
+            attrs += f' start="{fmt_num(start)}"'
+    if not children:
+        return [f"    <{elem} {attrs}/>"]
+    return [f"    <{elem} {attrs}>"] + children + [f"    </{elem}>"]
+
+
+def write_xml3(spec, path):
+    m = spec.model
+    cats = "\n".join(f"    <Category name={quoteattr(n)} description={quoteattr(d)}/>"
+                     for n, d in m["logCategories"])
+    lines = [
+        '<?xml version="1.0" encoding="UTF-8"?>',
+        f'<fmiModelDescription fmiVersion="3.0" modelName={quoteattr(m["modelName"])} '
+        f'instantiationToken="{fmi3_guid(spec)}" description={quoteattr(m["description"])} '
+        f'version={quoteattr(m["version"])} author={quoteattr(m["author"])} '
+        'generationTool="modelDescription/generate.py" variableNamingConvention="structured">',
+        f'  <CoSimulation modelIdentifier={quoteattr(m["modelIdentifier"])} '
+        'needsExecutionTool="false" canBeInstantiatedOnlyOncePerProcess="false" '
+        'canGetAndSetFMUState="true" canSerializeFMUState="true" '
+        'providesDirectionalDerivative="false" providesAdjointDerivatives="false" '
+        'canHandleVariableCommunicationStepSize="true" maxOutputDerivativeOrder="0" '
+        'providesIntermediateUpdate="false" mightReturnEarlyFromDoStep="false" '
+        'canReturnEarlyAfterIntermediateUpdate="false" hasEventMode="false" '
+        'providesEvaluateDiscreteStates="false"/>',
+    ]
+    lines += xml_units(spec) + xml3_types(spec)
+    lines += ["  <LogCategories>", cats, "  </LogCategories>",
+              '  <DefaultExperiment startTime="0.0" stopTime="0.3" tolerance="1e-06" '
+              'stepSize="0.0001"/>',
+              "  <ModelVariables>",
+              f'    <Float64 name="time" valueReference="{len(spec.vars)}" causality="independent" '
+              'variability="continuous" unit="s" description="simulation time"/>']
+    variables = fmi3_variables(spec)
+    for vr, v, count in variables:
+        lines += xml3_variable(vr, v, count, spec.enums)
+    lines.append("  </ModelVariables>")
+    lines.append("  <ModelStructure>")
+    outputs = [vr for vr, v, _ in variables if v["group"] == "output"]
+    calculated = [vr for vr, v, _ in variables if v["group"] == "calculated"]
+    lines += [f'    <Output valueReference="{vr}"/>' for vr in outputs]
+    lines += [f'    <InitialUnknown valueReference="{vr}"/>' for vr in sorted(outputs + calculated)]
+    lines.append("  </ModelStructure>")
+    lines.append("</fmiModelDescription>")
+    write_if_changed(path, "\n".join(lines) + "\n")
+
+
+def c_fmi3_table(spec):
+    """hg_fmi3_vars: for each FMI 2.0 value reference its FMI 3.0 element count (0: an array
+    element after the first) and whether it is an Enumeration (fmi3Get/SetInt64)."""
+    count = {vr: n for vr, _, n in fmi3_variables(spec)}
+    c = ["const hg_fmi3_var hg_fmi3_vars[HG_NUM_VARS] = {"]
+    c += [f"    {{{count.get(vr, 0)}, {int(v['typ'] in spec.enums)}}}, /* {v['name']} */"
+          for vr, v in enumerate(spec.vars)]
+    return c + ["};", ""]
+
+
 # ---------------------------------------------------------------- C table
 
 
@@ -271,7 +392,9 @@ def write_c(spec, directory):
          "#ifndef HG_VARS_H", "#define HG_VARS_H", "", "#include <stddef.h>", "",
          f'#define HG_GUID "{spec.guid()}"',
          f'#define HG_GUID_INTENUM "{intenum_guid(spec)}" /* the integer-coded variant */',
-         f"#define HG_NUM_VARS {len(spec.vars)}", "",
+         f'#define HG_TOKEN_FMI3 "{fmi3_guid(spec)}" /* the FMI 3.0 instantiationToken */',
+         f"#define HG_NUM_VARS {len(spec.vars)}",
+         "#define HG_FMI3_VR_TIME HG_NUM_VARS /* FMI 3.0: the independent variable */", "",
          "typedef enum { HG_REAL, HG_INTEGER, HG_BOOLEAN, HG_STRING } hg_base_type;",
          "typedef enum { HG_INPUT, HG_OUTPUT, HG_PARAMETER, HG_CALCULATED } hg_causality;", ""]
     for ename, items in spec.enums.items():
@@ -301,6 +424,11 @@ def write_c(spec, directory):
           "    double display_factor, display_offset; /* display = factor * value + offset */",
           "} hg_var_info;", "",
           "extern const hg_var_info hg_var_table[HG_NUM_VARS];", "",
+          "/* FMI 3.0: value reference r names a variable of count elements (r .. r + count - 1",
+          " * in hg_var_table; 0: an array element after the first, no FMI 3.0 variable), an",
+          " * Enumeration when enumeration is 1 (fmi3Get/SetInt64). */",
+          "typedef struct {", "    unsigned char count, enumeration;", "} hg_fmi3_var;",
+          "extern const hg_fmi3_var hg_fmi3_vars[HG_NUM_VARS];", "",
           "/* The storage of a variable in v: the one way from the table to a field. */",
           "void *hg_var_ptr(hg_vars *v, const hg_var_info *info);",
           "const void *hg_var_cptr(const hg_vars *v, const hg_var_info *info);", ""]
@@ -326,7 +454,7 @@ def write_c(spec, directory):
                  f'{input_index.get(vr, -1)}, '
                  f'{spec.output_sets.index(v.get("set", spec.output_sets[0]))}, '
                  f'{c_units(spec, v)}}},')
-    c += ["};", ""] + c_inputs_source(inputs)
+    c += ["};", ""] + c_fmi3_table(spec) + c_inputs_source(inputs)
     write_if_changed(f"{directory}/hg_vars.h", "\n".join(h))
     write_if_changed(f"{directory}/hg_vars.c", "\n".join(c))
 
@@ -476,6 +604,7 @@ def main():
     ap.add_argument("--toml", default=__file__.rsplit("/", 1)[0] + "/variables.toml")
     ap.add_argument("--xml")
     ap.add_argument("--xml-intenum", help="the modelDescription with Integer-coded enumerations")
+    ap.add_argument("--xml3", help="the FMI 3.0 modelDescription")
     ap.add_argument("--c-dir")
     ap.add_argument("--readme")
     ap.add_argument("--python", help="the Python variable table (hypoid/fmu/variables.py)")
@@ -487,6 +616,8 @@ def main():
         write_xml(spec, args.xml)
     if args.xml_intenum:
         write_xml_intenum(spec, args.xml_intenum)
+    if args.xml3:
+        write_xml3(spec, args.xml3)
     if args.c_dir:
         write_c(spec, args.c_dir)
     if args.readme:

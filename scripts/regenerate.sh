@@ -2,7 +2,8 @@
 # Regenerates, in one command, the data that depend on the full model's default results, after a
 # deliberate change of the defaults (friction, tooth data, contact, kinematics): the six built-in
 # efficiency maps (resources/maps), the FMU that packs them, the regression reference (the values
-# that moved are printed first: log the reason in docs/decisions.md), and the records
+# that moved are printed first: log the reason in docs/decisions.md) with the FMI 3.0 FMU's
+# reference results (extra/org.fmi-standard.fmi-ls-ref/, tools/fmi_ls_ref.py), and the records
 # that depend on them (docs/records/: the level table and the axle's loss map; `hypoid records
 # --list` names the others, each remade by `hypoid records --measure NAME`). Niced; the maps
 # take about 3 min each with two workers.
@@ -27,7 +28,9 @@ for part in "${parts[@]}"; do
       run cmake --build build -j2 >/dev/null ;; # the FMU packs the new maps
     regress)
       run .venv/bin/hypoid regress >"$out/regress-before.txt" || true # exit 1: values moved
-      run .venv/bin/hypoid regress --update >"$out/regress-update.txt" ;;
+      run .venv/bin/hypoid regress --update >"$out/regress-update.txt"
+      run "$py" tools/fmi_ls_ref.py
+      run cmake --build build -j2 >/dev/null ;; # the FMI 3.0 FMU packs them
     levels)
       run .venv/bin/hypoid records --measure level-table ;;
     lossmap)

@@ -2,7 +2,8 @@
 # Runs the C host tests/host/run_fmu.c against the normal FMU build (build/) under valgrind:
 # memcheck (errors and leaks of every kind fail the run) on a 0.1 s simulation with state
 # save / serialize / restore / reset, instances on threads, instantiate-free cycles with and
-# without dlopen/dlclose; helgrind (data races) on instances running on 3 threads.
+# without dlopen/dlclose, and the FMI 3.0 host tests/host/run_fmu3.c on the FMI 3.0 FMU; helgrind
+# (data races) on instances running on 3 threads.
 # Installs valgrind with apt when missing. About a minute.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,6 +21,9 @@ echo "valgrind: memcheck"
 "${memcheck[@]}" build/run_fmu build/fmu threads 2 0.005
 "${memcheck[@]}" build/run_fmu build/fmu soak 30 norss
 "${memcheck[@]}" build/run_fmu build/fmu soak 5 reload norss
+cc -std=c99 -O2 -g -Wall -Wextra -Werror -I"$(sed -n 's/^FMI3_INCLUDE_DIR:PATH=//p' build/CMakeCache.txt)" \
+   tests/host/run_fmu3.c -o build/run_fmu3 -ldl
+"${memcheck[@]}" build/run_fmu3 build/fmu_fmi3 0.01 0.001 >/dev/null
 echo "valgrind: helgrind"
 valgrind -q --tool=helgrind --error-exitcode=99 build/run_fmu build/fmu threads 3 0.005
 echo "valgrind: all clean"

@@ -10,8 +10,9 @@
 #   scripts/win64.sh test    rebuilds the DLLs and FMUs where sources changed, then the DLL's
 #                            exports and imports (objdump), the C unit tests and the C
 #                            host (tests/host) under Wine on build/HypoidGearPair.fmu, and the
-#                            linux64/win64 agreement (tests/portability/compare.py); the vehicle
-#                            FMU's DLL: exports, imports and the same output bits as linux64
+#                            linux64/win64 agreement (tests/portability/compare.py), the FMI 3.0
+#                            FMU's outputs on linux64 and win64 (tests/host/run_fmu3.c); the
+#                            vehicle FMU's DLL: exports, imports and the same output bits as linux64
 #
 # Third-party pieces are cached under build/third_party/ (sources, SUNDIALS for Windows, the Wine
 # prefix), so only the first run downloads and builds them. Where the cross toolchain cannot be
@@ -48,8 +49,8 @@ sundials_win64() {
     -DCMAKE_TOOLCHAIN_FILE="$root/cmake/mingw-w64-x86_64.cmake" | tail -1
 }
 
-fmi_include() {
-  echo "$(scripts/fmi_headers.sh)/fmi2"
+fmi_include() { # fmi2 (default) or fmi3
+  echo "$(scripts/fmi_headers.sh)/${1:-fmi2}"
 }
 
 build() {
@@ -73,17 +74,18 @@ build() {
   echo "$win/fmu/binaries/win64/HypoidGearPair.dll"
 }
 
-# Fails unless the DLL exports exactly the fmi2* functions and imports only system DLLs.
+# Fails unless the DLL exports only FMI functions (prefix $2: fmi2, or fmi[23] for the gear's, which
+# serves FMI 2.0 and 3.0) and imports only system DLLs.
 check_dll() {
-  local dll=$1 dump exports imports bad
+  local dll=$1 prefix=${2:-fmi2} dump exports imports bad
   dump=$($triple-objdump -p "$dll")
   exports=$(awk '/\[Ordinal\/Name Pointer\] Table/ { on = 1; next } on && /^[ \t]*\[/ { print $NF; next }
                  on { on = 0 }' <<<"$dump")
   imports=$(awk '/DLL Name:/ { print $3 }' <<<"$dump" | sort -u)
   echo "win64: $(basename "$dll") exports $(wc -w <<<"$exports") functions:" $exports
   echo "win64: $(basename "$dll") imports:" $imports
-  bad=$(grep -v '^fmi2' <<<"$exports" || true)
-  [ -z "$bad" ] || { echo "win64: FAILED - exports that are not fmi2*: $bad" >&2; exit 1; }
+  bad=$(grep -v "^$prefix" <<<"$exports" || true)
+  [ -z "$bad" ] || { echo "win64: FAILED - exports that are not $prefix*: $bad" >&2; exit 1; }
   [ "$(wc -w <<<"$exports")" -ge 30 ] || { echo "win64: FAILED - too few exports" >&2; exit 1; }
   bad=$(grep -viE '^(KERNEL32|msvcrt)\.dll$' <<<"$imports" || true)
   [ -z "$bad" ] || { echo "win64: FAILED - imports other than KERNEL32/msvcrt: $bad" >&2; exit 1; }
@@ -103,7 +105,7 @@ run_tests() {
   rm -rf "$dir" && python3 -m zipfile -e "$fmu" "$dir"
   [ -f "$dir/binaries/win64/HypoidGearPair.dll" ] \
     || { echo "win64: FAILED - $fmu has no binaries/win64/HypoidGearPair.dll" >&2; exit 1; }
-  check_dll "$dir/binaries/win64/HypoidGearPair.dll"
+  check_dll "$dir/binaries/win64/HypoidGearPair.dll" 'fmi[23]'
   [ -d "$WINEPREFIX" ] || { echo "win64: creating the Wine prefix $WINEPREFIX" >&2; $wine wineboot -i >/dev/null 2>&1; }
   ctest --test-dir "$win" --output-on-failure -j"$(nproc)" | tail -3
   # the C host: instantiate, initialise, a run with a state saved, serialized and restored
@@ -118,8 +120,25 @@ run_tests() {
     tests/host/fmu_host.c -o "$win/run_fmu_linux" -ldl -lpthread
   .venv/bin/python tests/portability/compare.py --fmu-dir "$dir" --wine "$wine" \
     --win-host "$win/run_fmu.exe" --linux-host "$win/run_fmu_linux"
+  fmi3
   vehicle
   /usr/lib/wine/wineserver -w # Wine's server ends a few seconds after its last client: wait
+}
+
+# The FMI 3.0 FMU: every Float64 output (arrays element by element) after each of 100 steps of
+# 1 ms from the default start, bit for bit as on linux64 (tests/host/run_fmu3.c on both)
+fmi3() {
+  local fmu=build/HypoidGearPair_fmi3.fmu dir=$win/fmu3-unzipped flags=(-std=c99 -O2 -Wall
+    -Wextra -Wpedantic -Werror -I"$(fmi_include fmi3)")
+  rm -rf "$dir" && python3 -m zipfile -e "$fmu" "$dir"
+  [ -f "$dir/binaries/x86_64-windows/HypoidGearPair.dll" ] \
+    || { echo "win64: FAILED - $fmu has no binaries/x86_64-windows/HypoidGearPair.dll" >&2; exit 1; }
+  $triple-gcc "${flags[@]}" tests/host/run_fmu3.c -o "$win/run_fmu3.exe" -static
+  cc "${flags[@]}" tests/host/run_fmu3.c -o "$win/run_fmu3_linux" -ldl
+  diff <($wine "$win/run_fmu3.exe" "Z:${dir//\//\\}" 0.1 0.001 | tr -d '\r') \
+    <("$win/run_fmu3_linux" "$dir" 0.1 0.001) >/dev/null \
+    || { echo "win64: FAILED - the FMI 3.0 FMU's outputs differ between win64 and linux64" >&2; exit 1; }
+  echo "win64: the FMI 3.0 FMU's $("$win/run_fmu3_linux" "$dir" 0.1 0.001 | wc -w) values (100 steps) agree bit for bit with linux64"
 }
 
 # The example vehicle FMU (examples/vehicle): its DLL's exports and imports, and every Real

@@ -12,36 +12,23 @@ const char *const hg_category_names[N_CATEGORIES] = {"logEvents", "logStatusWarn
 
 /* ------------------------------------------------------------------ logging */
 
-static void emit(hg_instance *c, fmi2Status status, int category, const char *msg)
-{
-    char escaped[2 * HG_ERRLEN];
-    const char *s;
-    char *o = escaped;
-    for (s = msg; *s; s++) { /* the host treats the message as a format string */
-        if (*s == '%') *o++ = '%';
-        *o++ = *s;
-    }
-    *o = '\0';
-    c->logger(c->env, c->name, status, hg_category_names[category], escaped);
-}
-
 static int logging(const hg_instance *c, int category)
 {
-    return c && c->logger && (c->log_on[category] || c->log_on[CAT_ALL]);
+    return c && c->emit && (c->log_on[category] || c->log_on[CAT_ALL]);
 }
 
 /* Formats "fn: message" (or just the message when fn is NULL) and passes it on. */
-static void vlog(hg_instance *c, fmi2Status status, int category, const char *fn,
+static void vlog(hg_instance *c, hg_status status, int category, const char *fn,
                  const char *fmt, va_list ap)
 {
     char msg[HG_ERRLEN];
     int n = fn ? snprintf(msg, sizeof msg, "%s: ", fn) : 0;
     if (n < 0 || (size_t)n >= sizeof msg) n = 0;
     vsnprintf(msg + n, sizeof msg - (size_t)n, fmt, ap);
-    emit(c, status, category, msg);
+    c->emit(c, status, hg_category_names[category], msg);
 }
 
-void hg_log(hg_instance *c, fmi2Status status, int category, const char *fmt, ...)
+void hg_log(hg_instance *c, hg_status status, int category, const char *fmt, ...)
 {
     va_list ap;
     if (!logging(c, category)) return;
@@ -55,15 +42,15 @@ void hg_error(hg_instance *c, const char *fn, const char *fmt, ...)
     va_list ap;
     if (!logging(c, CAT_ERROR)) return;
     va_start(ap, fmt);
-    vlog(c, fmi2Error, CAT_ERROR, fn, fmt, ap);
+    vlog(c, HG_ERROR, CAT_ERROR, fn, fmt, ap);
     va_end(ap);
 }
 
-fmi2Status hg_fail(hg_instance *c, const char *fn, const char *why)
+hg_status hg_fail(hg_instance *c, const char *fn, const char *why)
 {
     hg_error(c, fn, "%s", why);
     c->state = ST_ERROR;
-    return fmi2Error;
+    return HG_ERROR;
 }
 
 static void model_log(void *ctx, const char *category, const char *message)
@@ -73,7 +60,7 @@ static void model_log(void *ctx, const char *category, const char *message)
     for (k = 0; k < N_CATEGORIES; k++)
         if (strcmp(category, hg_category_names[k]) == 0) break;
     if (k == N_CATEGORIES) k = CAT_ALL;
-    hg_log(c, k == CAT_WARNING ? fmi2Warning : k == CAT_ERROR ? fmi2Error : fmi2OK, k, "%s",
+    hg_log(c, k == CAT_WARNING ? HG_WARNING : k == CAT_ERROR ? HG_ERROR : HG_OK, k, "%s",
            message);
 }
 
@@ -94,7 +81,7 @@ int hg_allowed(hg_instance *c, const char *fn, int states)
 {
     if (!c) return 0;
     if (c->state & states) return 1;
-    hg_log(c, fmi2Error, CAT_ERROR, "%s is not allowed in state '%s'", fn, state_name(c->state));
+    hg_log(c, HG_ERROR, CAT_ERROR, "%s is not allowed in state '%s'", fn, state_name(c->state));
     return 0;
 }
 
@@ -162,15 +149,15 @@ hg_model *hg_instance_model(hg_instance *c)
     return c->model;
 }
 
-fmi2Status hg_instance_output(hg_instance *c, const char *fn, const hg_var_info *info)
+hg_status hg_instance_output(hg_instance *c, const char *fn, const hg_var_info *info)
 {
     if (c->set_up && c->model && !hg_model_outputs_current(c->model, info->outset))
         hg_model_outputs(c->model, &c->vars, info->outset);
-    if (info->type != HG_REAL || isfinite(hg_real_value(c, info))) return fmi2OK;
+    if (info->type != HG_REAL || isfinite(hg_real_value(c, info))) return HG_OK;
     hg_error(c, fn, "output %s became %g at t = %.9g s", info->name, hg_real_value(c, info),
              hg_instance_time(c));
     c->state = ST_ERROR;
-    return fmi2Error;
+    return HG_ERROR;
 }
 
 double hg_instance_time(const hg_instance *c)
@@ -178,26 +165,26 @@ double hg_instance_time(const hg_instance *c)
     return c->set_up && c->model ? hg_model_time(c->model) : c->start_time;
 }
 
-fmi2Status hg_ensure_set_up(hg_instance *c, const char *fn)
+hg_status hg_ensure_set_up(hg_instance *c, const char *fn)
 {
     char err[HG_ERRLEN];
     const hg_var_info *bad;
     hg_vars before;
-    if (c->set_up) return fmi2OK;
+    if (c->set_up) return HG_OK;
     if (!c->resource_dir) {
         hg_error(c, fn, "no fmuResourceLocation was given at instantiation, so the gear-set and "
                  "lubricant data cannot be found");
-        return fmi2Error;
+        return HG_ERROR;
     }
     if (!hg_instance_model(c)) {
         hg_error(c, fn, "out of memory");
-        return fmi2Error;
+        return HG_ERROR;
     }
     before = c->vars; /* shallow copy: only its results are ever copied back */
     if (hg_model_setup(c->model, &c->vars, c->start_time, err, sizeof err)) {
         hg_vars_copy_results(&c->vars, &before);
         hg_error(c, fn, "%s", err);
-        return fmi2Error;
+        return HG_ERROR;
     }
     if ((bad = hg_first_nonfinite(c, 1)) != NULL) {
         double value = hg_real_value(c, bad);
@@ -205,8 +192,8 @@ fmi2Status hg_ensure_set_up(hg_instance *c, const char *fn)
         hg_describe_inputs(c, err, sizeof err);
         hg_error(c, fn, "%s = %g at the start: the parameters and inputs (%s) are beyond the "
                  "model's reach", bad->name, value, err);
-        return fmi2Error;
+        return HG_ERROR;
     }
     c->set_up = 1;
-    return fmi2OK;
+    return HG_OK;
 }
