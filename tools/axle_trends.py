@@ -3,7 +3,7 @@ rigid mesh, ehl_thermal, axle_losses = full, oil held at T_bath, the mean of the
 samples over 0.6 s, as hypoid.lossmap): the bearing loss against the transmitted torque, the
 spin loss at SAE J2985's two oil temperatures beside the oil's viscosity, the churning against
 the oil temperature, the mesh friction against the oil temperature, and the pinion bearings'
-share of the axle loss. Prints markdown tables (docs/validation.md and its record).
+share of the axle loss. Prints markdown tables (docs/axle.md).
 
   .venv/bin/python tools/axle_trends.py [--fmu build/HypoidGearPair.fmu] [--json out.json]"""
 
@@ -16,7 +16,7 @@ import sys
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from hypoid.instance import Instance  # noqa: E402
+from hypoid.fmu.instance import Instance  # noqa: E402
 
 T_END_S, H_S, MEAN_STEPS = 0.6, 0.02, 10
 PAIRS = 3

@@ -1,21 +1,20 @@
-"""The pinion's and the carrier's tapered roller bearing pairs in the FMU's Palmgren form beside
-the SKF catalogue's rolling + sliding model, at the FMU's default geometry and preloads: the
-rotating torque at hand speed (what workshop manuals specify; the SKF preload is the one that
-gives the same hand torque) and the drag at driving speeds. Prints the markdown tables of
-docs/axle.md ("Bearings: Palmgren beside SKF").
+"""The pinion's and the carrier's tapered roller bearing pairs by the SKF model, worked out here
+in Python from the catalogue's formulas at the FMU's default bearings and preloads (an
+independent check of fmu-src/axle/bearings.c): the rotating torque at hand speed that the
+workshop manuals specify, the torque at driving speeds and oil temperatures, its rolling and
+sliding parts, and the preloads' change with the carrier's temperature. Prints the markdown
+tables of docs/axle.md ("Bearings").
 
   .venv/bin/python tools/bearing_models.py
 
 SKF model (SKF rolling bearings catalogue, "The SKF model for calculating the frictional
-moment"; tapered roller bearings, Table 2a/2b): M = phi_ish phi_rs G_rr (nu n)^0.6 + G_sl mu_sl,
+moment"; tapered roller bearings): M = phi_ish phi_rs G_rr (nu n)^0.6 + G_sl mu_sl,
   G_rr = R1 d_m^2.38 (F_r + R2 Y F_a)^0.31,  G_sl = S1 d_m^0.82 (F_r + S2 Y F_a),
   phi_ish = 1 / (1 + 1.84e-9 (n d_m)^1.28 nu^0.64),
   phi_rs = exp(-K_rs nu n (d + D) sqrt(K_z / (2 (D - d)))),  K_rs = 3e-8, K_z = 6,
   mu_sl = phi_bl mu_bl + (1 - phi_bl) mu_EHL,  phi_bl = exp(-2.6e-8 (n nu)^1.4 d_m),
-  mu_bl = 0.15, mu_EHL = 0.002 (tapered roller bearings); series 323 (pinion): R1 = 2.38e-6,
-  R2 = 10.9, S1 = 0.019, S2 = 2; series 320 X (carrier): R1 = 2.38e-6, R2 = 10.9, S1 = 0.014,
-  S2 = 2 [N mm, mm, mm^2/s, r/min]. No seal term (open bearings), no drag term (splash-fed
-  bearings; the drag formula needs the oil level at the bearing)."""
+  mu_bl = 0.15, mu_EHL = 0.002; R2 = 10.9, S2 = 2 [N mm, mm, mm^2/s, r/min]. No seal term
+  (open bearings), no drag term (the bath stays below the bearings)."""
 
 import math
 import pathlib
@@ -26,14 +25,17 @@ sys.path.insert(0, str(ROOT))
 
 from hypoid.fmu.variables import VARIABLES  # noqa: E402
 
-# The pairs: bearings (FMU name: d, D [mm] of the catalogue size), SKF series constants, the
-# preload parameter and the shaft's speed per pinion speed (gear set 1, 13:36). Pinion: 32308
-# (head) and 32306 (tail); carrier: two 32010 X (the FMU's defaults are their catalogue d_m and Y).
-SKF_323 = dict(R1=2.38e-6, R2=10.9, S1=0.019, S2=2.0)
-SKF_320X = dict(R1=2.38e-6, R2=10.9, S1=0.014, S2=2.0)
-PAIRS = {"pinion": ({"ph": (40.0, 90.0), "pt": (30.0, 72.0)}, SKF_323, "F_pre_p", 1.0),
-         "carrier": ({"gn": (50.0, 80.0), "gf": (50.0, 80.0)}, SKF_320X, "F_pre_g", 13.0 / 36.0)}
+# the pairs: their bearings (FMU name prefixes), series constants, preload and stiffness
+# parameters, their spread [m] and the shaft's speed per pinion speed (gear set 1, 13:36)
+PAIRS = {"pinion": (("ph", "pt"), "p", "F_pre_p", "k_ax_p", ("brg_pt_x", "-brg_ph_x"), 1.0),
+         "carrier": (("gn", "gf"), "g", "F_pre_g", "k_ax_g", ("brg_gn_x", "brg_gf_x"),
+                     13.0 / 36.0)}
 HAND_RPM, HAND_C = 30.0, 20.0  # at the pinion nut
+ALPHA_STEEL, ALPHA_ALUMINIUM = 11.5e-6, 23e-6  # 1/K (docs/axle.md)
+
+
+def start(name):
+    return float(VARIABLES[name].start)
 
 
 def lubricant():
@@ -51,61 +53,59 @@ def nu_mm2s(T_C, lub=lubricant()):
     return lub["vogel_a"] * math.exp(lub["vogel_b"] / (T - lub["vogel_c"])) / rho * 1e6
 
 
-def start(name):
-    return float(VARIABLES[name].start)
-
-
-def palmgren(d_m, Y, F_a, n, nu):
-    """The FMU's moment [N m] (fmu-src/axle/bearings.c), d_m [mm]."""
-    M0 = 1e-7 * start("brg_f0") * max((nu * n) ** (2 / 3), 160.0) * d_m ** 3
-    return 1e-3 * (M0 + start("brg_f1") * 2 * Y * F_a * d_m)
-
-
-def skf(d, D, Y, F_a, n, nu, F_r=0.0, c=SKF_323):
+def skf(d, D, Y, R1, S1, F_a, n, nu, F_r=0.0):
+    """(rolling, sliding) moments [N m] of one bearing; d, D [mm]."""
     d_m = 0.5 * (d + D)
-    G_rr = c["R1"] * d_m ** 2.38 * (F_r + c["R2"] * Y * F_a) ** 0.31
-    G_sl = c["S1"] * d_m ** 0.82 * (F_r + c["S2"] * Y * F_a)
+    G_rr = R1 * d_m ** 2.38 * (F_r + 10.9 * Y * F_a) ** 0.31
+    G_sl = S1 * d_m ** 0.82 * (F_r + 2.0 * Y * F_a)
     phi_ish = 1.0 / (1.0 + 1.84e-9 * (n * d_m) ** 1.28 * nu ** 0.64)
     phi_rs = math.exp(-3e-8 * nu * n * (d + D) * math.sqrt(6.0 / (2.0 * (D - d))))
     phi_bl = math.exp(-2.6e-8 * (n * nu) ** 1.4 * d_m)
     mu_sl = phi_bl * 0.15 + (1.0 - phi_bl) * 0.002
-    return 1e-3 * (phi_ish * phi_rs * G_rr * (nu * n) ** 0.6 + G_sl * mu_sl)
+    return 1e-3 * phi_ish * phi_rs * G_rr * (nu * n) ** 0.6, 1e-3 * G_sl * mu_sl
 
 
-def pair(which, model, F_a, n_pinion, T_C):
-    """The pair's moment [N m] on its own shaft at the pinion speed n_pinion [r/min]."""
-    bearings, series, _, ratio = PAIRS[which]
+def spread(which):
+    a, b = PAIRS[which][4]
+    return start(a) + (-start(b[1:]) if b.startswith("-") else start(b))
+
+
+def preload(which, T_C, alpha_c=None):
+    """The pair's preload [N] at T_C, set at 20 degC (fmu-src/axle/bearings.c)."""
+    _, _, F_name, k_name, _, _ = PAIRS[which]
+    alpha_c = start("alpha_carrier") if alpha_c is None else alpha_c
+    return max(0.0, start(F_name) - start(k_name) * (alpha_c - ALPHA_STEEL) * spread(which)
+               * (T_C - 20.0))
+
+
+def pair(which, n_pinion, T_C, F_a=None):
+    """(rolling, sliding) moments [N m] of the pair, no external load, on its own shaft at the
+    pinion speed n_pinion [r/min]."""
+    bearings, s, _, _, _, ratio = PAIRS[which]
+    F_a = preload(which, T_C) if F_a is None else F_a
     n, nu = n_pinion * ratio, nu_mm2s(T_C)
-    if model == "palmgren":
-        return sum(palmgren(start(f"brg_{b}_dm") * 1e3, start(f"brg_{b}_Y"), F_a, n, nu)
-                   for b in bearings)
-    return sum(skf(*bearings[b], start(f"brg_{b}_Y"), F_a, n, nu, c=series) for b in bearings)
-
-
-def matching_preload(which, target):
-    """The SKF preload [N] whose hand-speed torque is `target` [N m] (bisection)."""
-    lo, hi = 0.0, 100000.0
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if pair(which, "skf", mid, HAND_RPM, HAND_C) < target else (lo, mid)
-    return 0.5 * (lo + hi)
+    parts = [skf(1e3 * start(f"brg_{b}_d"), 1e3 * start(f"brg_{b}_D"), start(f"brg_{b}_Y"),
+                 start(f"brg_{s}_R1"), start(f"brg_{s}_S1"), F_a, n, nu) for b in bearings]
+    return sum(p[0] for p in parts), sum(p[1] for p in parts)
 
 
 def table(which):
-    F_pre = start(PAIRS[which][2])
-    target = pair(which, "palmgren", F_pre, HAND_RPM, HAND_C)
-    F_skf = matching_preload(which, target)
-    print(f"{which} pair at {HAND_RPM:.0f} r/min of the pinion, {HAND_C:.0f} degC: Palmgren "
-          f"{target:.3f} N m at {F_pre / 1e3:.1f} kN; SKF gives that torque at "
-          f"{F_skf / 1e3:.2f} kN\n")
-    print(f"| oil °C | pinion r/min | Palmgren, {F_pre / 1e3:.1f} kN N·m | SKF, "
-          f"{F_skf / 1e3:.2f} kN N·m | SKF / Palmgren |")
-    print("|---|---|---|---|---|")
-    for T_C in (20.0, 40.0, 80.0):
-        for n in (HAND_RPM, 1000.0, 2000.0, 4000.0):
-            p, s = pair(which, "palmgren", F_pre, n, T_C), pair(which, "skf", F_skf, n, T_C)
-            print(f"| {T_C:.0f} | {n:.0f} | {p:.3f} | {s:.3f} | {s / p:.2f} |")
-    print()
+    hand = sum(pair(which, HAND_RPM, HAND_C))
+    ratio = PAIRS[which][5]
+    print(f"{which} pair, preload {start(PAIRS[which][2]) / 1e3:.2f} kN at 20 °C: "
+          f"{hand:.3f} N·m on its shaft at {HAND_RPM:.0f} r/min of the pinion in {HAND_C:.0f} °C "
+          f"oil ({hand * ratio:.3f} N·m at the pinion)\n")
+    print("| oil °C | ν mm²/s | preload kN | pinion r/min | rolling N·m | sliding N·m | total N·m |")
+    print("|---|---|---|---|---|---|---|")
+    for T_C in (20.0, 28.0, 40.0, 65.0, 80.0):
+        for n in (1000.0, 2000.0, 4000.0):
+            rr, sl = pair(which, n, T_C)
+            print(f"| {T_C:.0f} | {nu_mm2s(T_C):.1f} | {preload(which, T_C) / 1e3:.2f} | {n:.0f} | "
+                  f"{rr:.3f} | {sl:.3f} | {rr + sl:.3f} |")
+    k = start(PAIRS[which][3]) * spread(which)
+    print(f"\npreload change: {-k * (start('alpha_carrier') - ALPHA_STEEL):+.1f} N/K with the "
+          f"default carrier, {-k * (ALPHA_ALUMINIUM - ALPHA_STEEL):+.1f} N/K with an aluminium "
+          f"one (spread {1e3 * spread(which):.0f} mm)\n")
 
 
 def main():

@@ -48,12 +48,32 @@ void hg_trb_pair_axial(double Fr_1, double Y_1, double Fr_2, double Y_2, double 
     *Fa_2 = a - K_a;
 }
 
-double hg_trb_torque(const hg_trb *b, double F_a, double nu, double omega)
+/* SKF model constants of tapered roller bearings (bearings.h) */
+#define SKF_R2 10.9
+#define SKF_S2 2.0
+#define SKF_K_RS 3e-8 /* replenishment: oil bath (low level) or oil jet */
+#define SKF_K_Z 6.0   /* bearing type geometry constant, tapered roller bearings */
+#define MU_BL 0.15    /* sliding friction in boundary lubrication */
+#define MU_EHL 0.002  /* sliding friction in full film, tapered roller bearings */
+
+hg_trb_moment hg_trb_friction(const hg_trb *b, double F_r, double F_a, double nu, double omega)
 {
+    hg_trb_moment m;
     double n = fabs(omega) * 30.0 / HG_PI; /* r/min */
-    double nu_mm = nu * 1e6;                /* mm^2/s */
-    double dm = b->d_m * 1e3;               /* mm */
-    double M_0 = 1e-7 * b->f_0 * fmax(pow(nu_mm * n, 2.0 / 3.0), 160.0) * dm * dm * dm;
-    double M_1 = b->f_1 * 2.0 * b->Y * F_a * dm;
-    return 1e-3 * (M_0 + M_1); /* N mm -> N m */
+    double v = nu * 1e6;                   /* mm^2/s */
+    double d = b->d * 1e3, D = b->D * 1e3, dm = 0.5 * (d + D);
+    double G_rr = b->R_1 * pow(dm, 2.38) * pow(F_r + SKF_R2 * b->Y * F_a, 0.31);
+    double G_sl = b->S_1 * pow(dm, 0.82) * (F_r + SKF_S2 * b->Y * F_a);
+    double phi_ish = 1.0 / (1.0 + 1.84e-9 * pow(n * dm, 1.28) * pow(v, 0.64));
+    double phi_rs = exp(-SKF_K_RS * v * n * (d + D) * sqrt(SKF_K_Z / (2.0 * (D - d))));
+    double phi_bl = exp(-2.6e-8 * pow(n * v, 1.4) * dm);
+    double mu_sl = phi_bl * MU_BL + (1.0 - phi_bl) * MU_EHL;
+    m.M_rr = 1e-3 * phi_ish * phi_rs * G_rr * pow(v * n, 0.6); /* N mm -> N m */
+    m.M_sl = 1e-3 * mu_sl * G_sl;
+    return m;
+}
+
+double hg_trb_preload(double F_pre0, double k_ax, double d_alpha, double L, double dT)
+{
+    return fmax(0.0, F_pre0 - k_ax * d_alpha * L * dT);
 }

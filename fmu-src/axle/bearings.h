@@ -1,5 +1,6 @@
 /* Tapered roller bearings of a hypoid axle: mesh force components, bearing reactions, the
- * axial loads of an adjusted pair, and the friction torque of each bearing.
+ * axial loads of an adjusted pair, its preload at the oil temperature, and the frictional
+ * moment of each bearing.
  *
  * Sources:
  *   mesh force components of spiral bevel and hypoid gears: the Gleason/AGMA form, e.g.
@@ -8,13 +9,19 @@
  *   axial loads of two single-row tapered roller bearings adjusted against each other:
  *   ISO 281 / the SKF rolling bearings catalogue (2018), "Determining axial loads for
  *   bearings mounted singly or paired", extended by a preload;
- *   friction torque: Palmgren's load-independent plus load-dependent moments as used in
- *   ISO/TR 14179-2:2001 and in T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis (2007):
- *     M_0 = 10^-7 f_0 (nu n)^(2/3) d_m^3   for nu n >= 2000
- *     M_0 = 160 10^-7 f_0 d_m^3            for nu n < 2000
- *     M_1 = f_1 P_1 d_m,  tapered roller bearings: f_1 = 0.0004, P_1 = 2 Y F_a
- *   (M [N mm], nu [mm^2/s], n [r/min], d_m [mm], P_1 [N]). The functions below take and give
- *   SI units and convert inside. */
+ *   frictional moment: the SKF model (SKF rolling bearings catalogue, "The SKF model for
+ *   calculating the frictional moment"), rolling and sliding parts for tapered roller bearings:
+ *     M_rr = phi_ish phi_rs G_rr (nu n)^0.6,  G_rr = R_1 d_m^2.38 (F_r + R_2 Y F_a)^0.31
+ *     M_sl = mu_sl G_sl,                    G_sl = S_1 d_m^0.82 (F_r + S_2 Y F_a)
+ *     phi_ish = 1 / (1 + 1.84e-9 (n d_m)^1.28 nu^0.64)                  inlet shear heating
+ *     phi_rs = exp(-K_rs nu n (d + D) sqrt(K_z / (2 (D - d))))          kinematic replenishment
+ *     mu_sl = phi_bl mu_bl + (1 - phi_bl) mu_EHL,  phi_bl = exp(-2.6e-8 (n nu)^1.4 d_m)
+ *   with R_2 = 10.9, S_2 = 2 (every tapered series of the catalogue's Table 2b), K_rs = 3e-8
+ *   (oil bath, low level, or oil jet), K_z = 6 (tapered roller bearings), mu_bl = 0.15,
+ *   mu_EHL = 0.002 (tapered roller bearings); M [N mm], d, D, d_m [mm], F [N], n [r/min],
+ *   nu [mm^2/s]. No seal moment (open bearings) and no drag moment (the bearings are fed by the
+ *   oil the ring gear throws; the bath stays below them, docs/axle.md). The functions below
+ *   take and give SI units and convert inside. */
 #ifndef HG_AXLE_BEARINGS_H
 #define HG_AXLE_BEARINGS_H
 
@@ -55,18 +62,31 @@ void hg_shaft_reactions(const hg_mesh_force *f, double r_m, double x_A, double x
 void hg_trb_pair_axial(double Fr_1, double Y_1, double Fr_2, double Y_2, double K_a, double F_pre,
                        double *Fa_1, double *Fa_2);
 
-/* A tapered roller bearing. */
+/* A tapered roller bearing of the SKF model. */
 typedef struct {
-    double d_m; /* mean diameter (d + D)/2 [m] */
-    double Y;   /* axial load factor of the bearing (catalogue) */
-    double f_0; /* Palmgren's load-independent factor (lubrication and bearing series) */
-    double f_1; /* load-dependent factor, 0.0004 for tapered roller bearings */
+    double d, D;   /* bore and outside diameter [m] */
+    double Y;      /* axial load factor of the bearing (catalogue) */
+    double R_1;    /* SKF geometry constant of the rolling moment of the series [N mm units] */
+    double S_1;    /* ... of the sliding moment */
 } hg_trb;
 
-/* Friction torque magnitude [N m] at the axial load F_a [N], kinematic viscosity nu [m^2/s]
- * and speed omega [rad/s] (either sign). The low-speed branch is taken as
- * max((nu n)^(2/3), 160), which equals Palmgren's two branches except between nu n = 2000 and
- * 2024, where it is continuous and the published form jumps by 0.8 %. */
-double hg_trb_torque(const hg_trb *b, double F_a, double nu, double omega);
+/* The bearing's frictional moment by part [N m], magnitudes. */
+typedef struct {
+    double M_rr; /* rolling: EHL rolling resistance, with inlet shear heating and replenishment */
+    double M_sl; /* sliding: roller ends on the rib and the raceways, boundary and full film */
+} hg_trb_moment;
+
+/* Frictional moment at the radial load F_r [N], axial load F_a [N], kinematic viscosity
+ * nu [m^2/s] and speed omega [rad/s] (either sign). Both parts vanish with the load; at rest
+ * only the boundary sliding (mu_bl) remains. */
+hg_trb_moment hg_trb_friction(const hg_trb *b, double F_r, double F_a, double nu, double omega);
+
+/* Preload [N] of a pair adjusted to F_pre0 and then warmed by dT [K]: a carrier that expands
+ * by alpha_c and a steel shaft by alpha_s per kelvin move the cups apart from the cones by
+ * d_alpha L dT (d_alpha = alpha_c - alpha_s [1/K]) over the pair's spread L [m], which the
+ * pair's axial stiffness k_ax [N/m] turns into force:
+ *   F_pre = max(0, F_pre0 - k_ax d_alpha L dT)
+ * (linear stiffness, one temperature for carrier, shaft and bearings; docs/axle.md). */
+double hg_trb_preload(double F_pre0, double k_ax, double d_alpha, double L, double dT);
 
 #endif

@@ -211,16 +211,23 @@ static void pair_friction(const hg_dyn_params *p, const double *y,
     }
 }
 
-/* The map level: the loss (1 - eta) of the power entering from the driving side, as a torque on
- * the pinion, so that T_fp w_p = -P_loss exactly. */
+/* max(x, 0), +0 for NaN and -0: fmax(x, 0.0) without its call (the right-hand side makes a dozen
+ * of them; libm's fmax is not inlined). */
+static double at_least_zero(double x) { return x > 0.0 ? x : 0.0; }
+
+/* The map level: the loss (1 - eta) of the power entering the mesh from the driving side, as a
+ * torque on the pinion, so that T_fp w_p = -P_loss exactly. The map holds the mesh alone, so
+ * its torque is the driving shaft's less what that side's bearings and seals (and, at the gear,
+ * churning) take on the way (ev->axle, evaluated before). */
 static void map_loss(const hg_dyn_params *p, const double *y,
                      hg_dyn_eval *ev)
 {
     double w_p = y[HG_Y_W_P], T_1 = ev->T_1, T_2p = shaft2_torque(p, y) / p->ratio;
     int coast = -T_2p * w_p > T_1 * w_p; /* power enters from the wheel side */
-    double T_in = coast ? T_2p : T_1;
+    double drag = coast ? fabs(ev->axle.T_g) / p->ratio : fabs(ev->axle.T_p);
+    double T_in = at_least_zero(fabs(coast ? T_2p : T_1) - drag);
     double eta = hg_effmap_eta(p->map, coast ? HG_MAP_COAST : HG_MAP_DRIVE, w_p, T_in, ev->T_oil);
-    double T_loss = (1.0 - eta) * fabs(T_in), s = sqrt(w_p * w_p + SPIN_EPS * SPIN_EPS);
+    double T_loss = (1.0 - eta) * T_in, s = sqrt(w_p * w_p + SPIN_EPS * SPIN_EPS);
     ev->T_fp = -T_loss * w_p / s;
     ev->P_loss = T_loss * w_p * w_p / s;
 }
@@ -256,8 +263,8 @@ static void rigid_mesh(const hg_dyn_params *p, const hg_inputs *u, const double 
     ev->T_1 = T_in - I_s * acc;
     ev->W_t = (p->I_g * acc / i + T_2) / ev->R_g;
     net_force_loads(ev);
-    losses(p, y, all_pairs, T_c_warm, ev);
     axle_losses(p, y, ev);
+    losses(p, y, all_pairs, T_c_warm, ev);
     T_p = ev->T_fp + ev->axle.T_p;
     T_g = ev->T_fg + ev->axle.T_g;
     ev->acc_p = (T_in - T_2 / i + T_p + T_g / i) / J;
@@ -268,10 +275,6 @@ static void rigid_mesh(const hg_dyn_params *p, const hg_inputs *u, const double 
 
 /* The larger of a and b, neither NaN. */
 static double larger(double a, double b) { return a > b ? a : b; }
-
-/* max(x, 0), +0 for NaN and -0: fmax(x, 0.0) without its call (the right-hand side makes a dozen
- * of them; libm's fmax is not inlined). */
-static double at_least_zero(double x) { return x > 0.0 ? x : 0.0; }
 
 static double efficiency_of(double P_loss, double P_in)
 {
@@ -356,8 +359,8 @@ void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const
         rigid_mesh(p, u, y, all_pairs, T_c_warm, ev);
     } else {
         ev->T_1 = shaft1_torque(p, y);
-        losses(p, y, all_pairs, T_c_warm, ev);
         axle_losses(p, y, ev);
+        losses(p, y, all_pairs, T_c_warm, ev);
     }
     efficiency(u, y, ev);
     ev->Q_dot = housing_heat(p, ev->T_oil, u->T_amb, u->v_air);

@@ -192,6 +192,10 @@ static int begin_step(hg_model *m, const hg_vars *v, const hg_inputs *du, double
 {
     hg_runtime *rt = &m->rt;
     double h0;
+    if (m->s.p.ledger.sump
+            ? hg_setup_oil_in_range(&m->s, "T_oil", rt->y[HG_Y_T_OIL], err, errlen)
+            : hg_setup_oil_in_range(&m->s, "T_bath", v->T_bath, err, errlen))
+        return -1;
     begin_inputs(m, v, du, &h0);
     if (hg_solver_set_max_step(m->solver, hg_stepping_step_limit(rt, &m->s, h), err, errlen))
         return -1;

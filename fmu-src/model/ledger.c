@@ -12,6 +12,9 @@
 #define SPIN_EPS 1e-2   /* regularisation of the rotation direction of the loss torques [rad/s] */
 #define RHO_EXPANSION 7e-4 /* volumetric expansion of gear oils [1/K] (assumed, docs/axle.md) */
 #define T_15C 288.15
+#define T_PRELOAD 293.15   /* the workshop sets the preloads at 20 degC [K] */
+#define ALPHA_STEEL 11.5e-6 /* thermal expansion of the steel shaft and bearings [1/K] (docs/axle.md) */
+#define Y0_PER_Y 0.55      /* ISO 76: Y_0 = 0.22 cot(alpha), Y = 0.4 cot(alpha) for tapered rollers */
 
 /* The built-in gear sets' blanks: Paouris et al. 2016 Table 1 and the blank data of
  * resources/gearsets/gearsetN.txt (ring outer pitch diameter 2 A_e2 sin(delta_2)). */
@@ -82,17 +85,44 @@ static int pair_geometry(const char *shaft, const char *n1, double x1, const cha
     return -1;
 }
 
-static void bearings(hg_ledger *a, const hg_vars *v)
+/* one bearing's diameters: a bore inside its outside diameter */
+static int bearing_size(const char *name, double d, double D, char *err, size_t errlen)
 {
-    const double dm[HG_N_BRG] = {v->brg_ph_dm, v->brg_pt_dm, v->brg_gn_dm, v->brg_gf_dm};
+    if (D > d) return 0;
+    hg_errorf(err, errlen, "%s_D = %g m must exceed its bore %s_d = %g m (a bearing's outside "
+              "diameter lies outside its bore)", name, D, name, d);
+    return -1;
+}
+
+/* a preload the pair's static rating can carry alone (ISO 76: Y_0 F_a <= C_0, s_0 = 1) */
+static int preload_rating(const char *F_name, double F_pre, const char *C_name, double C_0,
+                          double Y_max, char *err, size_t errlen)
+{
+    double limit = C_0 / (Y0_PER_Y * Y_max);
+    if (F_pre <= limit) return 0;
+    hg_errorf(err, errlen, "%s = %g N exceeds what the pair's static rating %s = %g N carries "
+              "(C_0 / Y_0 = %g N with Y_0 = 0.55 Y, ISO 76)", F_name, F_pre, C_name, C_0, limit);
+    return -1;
+}
+
+static int bearings(hg_ledger *a, const hg_vars *v, char *err, size_t errlen)
+{
+    static const char *NAME[HG_N_BRG] = {"brg_ph", "brg_pt", "brg_gn", "brg_gf"};
+    const double d[HG_N_BRG] = {v->brg_ph_d, v->brg_pt_d, v->brg_gn_d, v->brg_gf_d};
+    const double D[HG_N_BRG] = {v->brg_ph_D, v->brg_pt_D, v->brg_gn_D, v->brg_gf_D};
     const double Y[HG_N_BRG] = {v->brg_ph_Y, v->brg_pt_Y, v->brg_gn_Y, v->brg_gf_Y};
     int k;
     for (k = 0; k < HG_N_BRG; k++) {
-        a->brg[k].d_m = dm[k];
-        a->brg[k].Y = Y[k];
-        a->brg[k].f_0 = v->brg_f0;
-        a->brg[k].f_1 = v->brg_f1;
+        int pinion = k <= HG_BRG_P_TAIL;
+        if (bearing_size(NAME[k], d[k], D[k], err, errlen)) return -1;
+        a->brg[k] = (hg_trb){d[k], D[k], Y[k], pinion ? v->brg_p_R1 : v->brg_g_R1,
+                             pinion ? v->brg_p_S1 : v->brg_g_S1};
     }
+    if (preload_rating("F_pre_p", v->F_pre_p, "brg_p_C0", v->brg_p_C0, fmax(Y[0], Y[1]), err,
+                       errlen) ||
+        preload_rating("F_pre_g", v->F_pre_g, "brg_g_C0", v->brg_g_C0, fmax(Y[2], Y[3]), err,
+                       errlen))
+        return -1;
     a->x_brg[HG_BRG_P_HEAD] = v->brg_ph_x;
     a->x_brg[HG_BRG_P_TAIL] = v->brg_pt_x;
     /* the carrier's ring-side bearing lies behind the ring (away from its apex), the far one on
@@ -101,6 +131,10 @@ static void bearings(hg_ledger *a, const hg_vars *v)
     a->x_brg[HG_BRG_G_FAR] = -v->brg_gf_x;
     a->F_pre_p = v->F_pre_p;
     a->F_pre_g = v->F_pre_g;
+    a->k_ax_p = v->k_ax_p;
+    a->k_ax_g = v->k_ax_g;
+    a->d_alpha = v->alpha_carrier - ALPHA_STEEL;
+    return 0;
 }
 
 int hg_ledger_setup(hg_ledger *a, const hg_vars *v, int gear_set_builtin,
@@ -115,8 +149,7 @@ int hg_ledger_setup(hg_ledger *a, const hg_vars *v, int gear_set_builtin,
     a->h_housing = v->h_housing;
     a->C_sump = v->C_sump;
     if (!a->full) return 0;
-    if (blank(a, v, gear_set_builtin, err, errlen)) return -1;
-    bearings(a, v);
+    if (blank(a, v, gear_set_builtin, err, errlen) || bearings(a, v, err, errlen)) return -1;
     if (pair_geometry("pinion", "brg_ph_x", v->brg_ph_x, "brg_pt_x", v->brg_pt_x, err, errlen))
         return -1;
     a->T_seal_p = hg_seal_torque(v->d_seal_p);
@@ -135,7 +168,7 @@ double hg_ledger_nu(const hg_lubricant *lub, double T)
            hg_ledger_rho(lub, T);
 }
 
-/* bearing loads of one shaft from the mesh force on its member */
+/* bearing loads of one shaft from the mesh force on its member and the pair's preload */
 static void shaft_bearings(const hg_ledger *a, const hg_member_geom *m, int driving, double F_t,
                            double s, int k1, double F_pre, hg_ledger_eval *ev)
 {
@@ -144,6 +177,18 @@ static void shaft_bearings(const hg_ledger *a, const hg_member_geom *m, int driv
     hg_shaft_reactions(&f, m->r_m, a->x_brg[k1], a->x_brg[k2], &ev->Fr[k1], &ev->Fr[k2]);
     hg_trb_pair_axial(ev->Fr[k1], a->brg[k1].Y, ev->Fr[k2], a->brg[k2].Y, f.F_a, F_pre,
                       &ev->Fa[k1], &ev->Fa[k2]);
+}
+
+/* frictional moment of the pair k1, k1 + 1 [N m] */
+static double pair_moment(const hg_ledger *a, int k1, double nu, double w, const hg_ledger_eval *ev)
+{
+    double M = 0.0;
+    int k;
+    for (k = k1; k <= k1 + 1; k++) {
+        hg_trb_moment m = hg_trb_friction(&a->brg[k], ev->Fr[k], ev->Fa[k], nu, w);
+        M += m.M_rr + m.M_sl;
+    }
+    return M;
 }
 
 /* torque of magnitude M opposing rotation at w, and the power it takes */
@@ -157,24 +202,25 @@ static double opposing(double M, double w, double *T)
 void hg_ledger_losses(const hg_ledger *a, double w_p, double w_g, double W_t, double R_p,
                       double R_g, double T_oil, hg_ledger_eval *ev)
 {
-    double s = W_t >= 0.0 ? 1.0 : -1.0, nu, rho, M_p = 0.0, M_g = 0.0;
-    int k;
+    double s = W_t >= 0.0 ? 1.0 : -1.0, rho, dT = T_oil - T_PRELOAD;
     *ev = (hg_ledger_eval){0};
     if (!a->full) return;
-    nu = hg_ledger_nu(a->lub, T_oil);
+    ev->nu = hg_ledger_nu(a->lub, T_oil);
     rho = hg_ledger_rho(a->lub, T_oil);
+    ev->F_pre_p = hg_trb_preload(a->F_pre_p, a->k_ax_p, a->d_alpha,
+                                 a->x_brg[HG_BRG_P_TAIL] - a->x_brg[HG_BRG_P_HEAD], dT);
+    ev->F_pre_g = hg_trb_preload(a->F_pre_g, a->k_ax_g, a->d_alpha,
+                                 a->x_brg[HG_BRG_G_NEAR] - a->x_brg[HG_BRG_G_FAR], dT);
     shaft_bearings(a, &a->pinion, 1, fabs(W_t) * R_p / a->pinion.r_m, s, HG_BRG_P_HEAD,
-                   a->F_pre_p, ev);
+                   ev->F_pre_p, ev);
     /* the carrier: the ring-side bearing takes a thrust away from the ring's apex */
-    shaft_bearings(a, &a->gear, 0, fabs(W_t) * R_g / a->gear.r_m, s, HG_BRG_G_NEAR, a->F_pre_g,
+    shaft_bearings(a, &a->gear, 0, fabs(W_t) * R_g / a->gear.r_m, s, HG_BRG_G_NEAR, ev->F_pre_g,
                    ev);
-    for (k = HG_BRG_P_HEAD; k <= HG_BRG_P_TAIL; k++)
-        M_p += hg_trb_torque(&a->brg[k], ev->Fa[k], nu, w_p);
-    for (k = HG_BRG_G_NEAR; k <= HG_BRG_G_FAR; k++)
-        M_g += hg_trb_torque(&a->brg[k], ev->Fa[k], nu, w_g);
-    ev->P_bearings = opposing(M_p, w_p, &ev->T_p) + opposing(M_g, w_g, &ev->T_g);
+    ev->P_bearings_p = opposing(pair_moment(a, HG_BRG_P_HEAD, ev->nu, w_p, ev), w_p, &ev->T_p);
+    ev->P_bearings_g = opposing(pair_moment(a, HG_BRG_G_NEAR, ev->nu, w_g, ev), w_g, &ev->T_g);
+    ev->P_bearings = ev->P_bearings_p + ev->P_bearings_g;
     ev->P_seals = opposing(a->T_seal_p, w_p, &ev->T_p) + opposing(a->T_seal_w, w_g, &ev->T_g);
-    ev->P_churn = opposing(hg_churn_torque(&a->churn, rho, nu, w_g), w_g, &ev->T_g);
+    ev->P_churn = opposing(hg_churn_torque(&a->churn, rho, ev->nu, w_g), w_g, &ev->T_g);
 }
 
 double hg_ledger_heat_out(const hg_ledger *a, double T_oil, double T_amb, double v_air)

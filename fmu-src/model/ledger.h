@@ -21,7 +21,9 @@ typedef struct {
     hg_member_geom pinion, gear;
     hg_trb brg[HG_N_BRG];     /* pinion head and tail, carrier ring side and far side */
     double x_brg[HG_N_BRG];   /* axial positions from the member's mean point [m] */
-    double F_pre_p, F_pre_g;  /* preloads of the pinion and carrier pairs [N] */
+    double F_pre_p, F_pre_g;  /* preloads of the pinion and carrier pairs as set at 20 degC [N] */
+    double k_ax_p, k_ax_g;    /* axial stiffness of the preloaded pairs [N/m] */
+    double d_alpha;           /* thermal expansion of the carrier less that of steel [1/K] */
     double T_seal_p, T_seal_w; /* seal torques: pinion seal, the two axle-shaft seals [N m] */
     hg_housing housing;
     double h_housing;         /* > 0: fixed convective coefficient [W/(m^2 K)]; 0: correlations */
@@ -32,6 +34,9 @@ typedef struct {
 typedef struct {
     double T_p, T_g;                     /* loss torques on pinion and gear [N m], oppose motion */
     double P_churn, P_bearings, P_seals; /* [W]; P = -(T_p w_p + T_g w_g) split by part */
+    double P_bearings_p, P_bearings_g;   /* the pinion's and the carrier's bearing pairs [W] */
+    double F_pre_p, F_pre_g;             /* the pairs' preloads at T_oil [N] */
+    double nu;                           /* kinematic viscosity of the oil at T_oil [m^2/s] */
     double Fr[HG_N_BRG], Fa[HG_N_BRG];   /* bearing loads [N] */
 } hg_ledger_eval;
 

@@ -68,6 +68,11 @@ static void write_losses(const hg_runtime *rt, const hg_dyn_eval *ev, hg_vars *v
     v->P_loss_cycle = rt->P_loss_cycle;
     v->P_churn = ev->axle.P_churn;
     v->P_bearings = ev->axle.P_bearings;
+    v->P_bearings_p = ev->axle.P_bearings_p;
+    v->P_bearings_g = ev->axle.P_bearings_g;
+    v->F_pre_p_T = ev->axle.F_pre_p;
+    v->F_pre_g_T = ev->axle.F_pre_g;
+    v->nu_oil = ev->axle.nu;
     v->P_seals = ev->axle.P_seals;
     v->P_axle = ev->P_axle;
     v->P_in_axle = ev->P_in_axle;

@@ -327,11 +327,28 @@ static void tolerances(hg_setup *s, const hg_vars *v)
     s->steps_per_mesh = s->fixed_step ? v->steps_per_mesh_cycle : STEPS_PER_MESH;
 }
 
+int hg_setup_oil_in_range(const hg_setup *s, const char *name, double T, char *err, size_t errlen)
+{
+    double lo, hi;
+    hg_lubricant_T_range(&s->lub, &lo, &hi);
+    if (T >= lo && T <= hi) return 0;
+    hg_errorf(err, errlen, "%s = %g K (%.1f degC) is outside the valid range of the lubricant %s, "
+              "%.1f-%.1f K (%.1f to %.1f degC): colder, its viscosity exceeds SAE J306's %g Pa s; "
+              "hotter, it lies %g K beyond its pressure-viscosity data", name, T, T - 273.15,
+              s->lub.name, lo, hi, lo - 273.15, hi - 273.15, HG_LUBRICANT_ETA_COLD,
+              HG_LUBRICANT_T_BEYOND);
+    return -1;
+}
+
 int hg_setup_load(hg_setup *s, const char *resource_dir, const hg_logger *lg, hg_vars *v,
                   char *err, size_t errlen)
 {
     if (load_gearset(s, resource_dir, v, err, errlen) ||
         load_lubricant(s, resource_dir, v, err, errlen))
+        return -1;
+    if (v->thermal_model == HG_THERMAL_MODEL_SUMP
+            ? hg_setup_oil_in_range(s, "T_oil0", v->T_oil0, err, errlen)
+            : hg_setup_oil_in_range(s, "T_bath", v->T_bath, err, errlen))
         return -1;
     dynamics_params(s, v);
     ehl_params(s, v);

@@ -33,6 +33,10 @@ typedef struct {
 int hg_setup_load(hg_setup *s, const char *resource_dir, const hg_logger *lg, hg_vars *v,
                   char *err, size_t errlen);
 
+/* 0 if the oil temperature T [K], the value of the variable `name`, lies in the lubricant's
+ * valid range (hg_lubricant_T_range); else -1 with a message naming it, its value and unit. */
+int hg_setup_oil_in_range(const hg_setup *s, const char *name, double T, char *err, size_t errlen);
+
 /* Frees what hg_setup_load allocated. */
 void hg_setup_free(hg_setup *s);
 

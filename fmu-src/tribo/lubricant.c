@@ -120,3 +120,9 @@ done:
     hg_datafile_free(f);
     return rc;
 }
+
+void hg_lubricant_T_range(const hg_lubricant *l, double *T_lo, double *T_hi)
+{
+    *T_lo = l->vogel_c + l->vogel_b / log(HG_LUBRICANT_ETA_COLD / l->vogel_a);
+    *T_hi = l->alpha_T[2] + HG_LUBRICANT_T_BEYOND;
+}

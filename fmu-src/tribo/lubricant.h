@@ -7,6 +7,9 @@
 
 #define HG_LUBRICANT_NAME_LEN 80
 #define HG_LUBRICANT_K_F_MIN 0.01 /* lowest thermal conductivity a file may give [W/(m K)] */
+#define HG_LUBRICANT_ETA_COLD 150.0 /* SAE J306: a gear oil's low-temperature viscosity limit,
+                                       150 000 mPa s, that sets its W grade [Pa s] */
+#define HG_LUBRICANT_T_BEYOND 40.0  /* K beyond the highest pressure-viscosity datum */
 
 typedef struct {
     char name[HG_LUBRICANT_NAME_LEN]; /* human-readable name */
@@ -28,5 +31,10 @@ typedef struct {
  * 40 K below alpha_T[0], hn_alpha hn_beta <= 1. Returns 0, or -1 with err naming the file and,
  * where there is one, the line. *lub is only written on success. */
 int hg_lubricant_load(const char *path, hg_lubricant *lub, char *err, size_t errlen);
+
+/* The oil temperatures [K] the lubricant's data describe: from where its Vogel viscosity falls
+ * to SAE J306's low-temperature limit HG_LUBRICANT_ETA_COLD, T_lo = c + b / ln(eta/a), to
+ * HG_LUBRICANT_T_BEYOND above its highest pressure-viscosity datum. */
+void hg_lubricant_T_range(const hg_lubricant *lub, double *T_lo, double *T_hi);
 
 #endif

@@ -36,9 +36,11 @@ REACHES_EVERY_LEVEL = frozenset({
     "max_step", "steps_per_mesh_cycle", "I_s", "I_p", "I_g", "I_w", "k_t1", "k_t2", "zeta_2",
     "zeta_3", "zeta_4", "w_p0", "governor_bandwidth", "n_avg_cycles", "axle_losses",
     "thermal_model", "ring_d", "ring_b", "r_m_p", "r_m_g", "delta_p", "delta_g", "beta_p",
-    "beta_g", "alpha_n", "oil_level", "V_oil", "brg_ph_dm", "brg_ph_Y", "brg_ph_x", "brg_pt_dm",
-    "brg_pt_Y", "brg_pt_x", "brg_gn_dm", "brg_gn_Y", "brg_gn_x", "brg_gf_dm", "brg_gf_Y",
-    "brg_gf_x", "brg_f0", "brg_f1", "F_pre_p", "F_pre_g", "d_seal_p", "d_seal_w", "T_oil0",
+    "beta_g", "alpha_n", "oil_level", "V_oil", "brg_ph_d", "brg_ph_D", "brg_ph_Y", "brg_ph_x",
+    "brg_pt_d", "brg_pt_D", "brg_pt_Y", "brg_pt_x", "brg_gn_d", "brg_gn_D", "brg_gn_Y",
+    "brg_gn_x", "brg_gf_d", "brg_gf_D", "brg_gf_Y", "brg_gf_x", "brg_p_R1", "brg_p_S1",
+    "brg_g_R1", "brg_g_S1", "brg_p_C0", "brg_g_C0", "F_pre_p", "F_pre_g", "k_ax_p", "k_ax_g",
+    "alpha_carrier", "d_seal_p", "d_seal_w", "T_oil0",
     "C_sump", "A_housing", "L_housing", "eps_housing", "h_housing"})
 MESH_FRICTION = frozenset({    # the friction model and its data: not in the built-in maps
     "gear_set_file", "lubricant_file", "mu_const", "E", "nu", "k_s", "rho_s", "c_s", "tau_0",

@@ -1,6 +1,7 @@
 /* Bearing loads and friction (fmu-src/axle/bearings.c) against hand calculations of the
  * published forms (AGMA 2005 / Shigley mesh force components, ISO 281 axial loads of an
- * adjusted pair, Palmgren's friction moments as in ISO/TR 14179-2) and against statics. */
+ * adjusted pair, the SKF model's rolling and sliding moments of tapered roller bearings, the
+ * preload's thermal change) and against statics. */
 #include "check.h"
 #include "axle/bearings.h"
 #include "io/constants.h"
@@ -75,14 +76,43 @@ static void check_reactions(void)
 
 static void check_friction(void)
 {
-    /* d_m 60 mm, Y 1.7, f_0 3, f_1 0.0004, F_a 5 kN.
-     * nu n = 100 mm^2/s * 2864.8 r/min = 2.86e5 >= 2000: M_0 = 1e-7*3*(2.8648e5)^(2/3)*60^3
-     * = 281.60 N mm, M_1 = 0.0004*2*1.7*5000*60 = 408 N mm -> 0.689603 N m */
-    hg_trb b = {0.060, 1.7, 3.0, 0.0004};
-    CHECK_CLOSE(hg_trb_torque(&b, 5000.0, 1e-4, 300.0), 0.6896027, 1e-6, 0);
-    CHECK_CLOSE(hg_trb_torque(&b, 5000.0, 1e-4, -300.0), 0.6896027, 1e-6, 0);
-    /* nu n = 10 * 9.549 < 2000: M_0 = 160e-7*3*60^3 = 10.368 N mm -> 0.418368 N m */
-    CHECK_CLOSE(hg_trb_torque(&b, 5000.0, 1e-5, 1.0), 0.418368, 1e-9, 0);
+    /* a 32308 (d 40, D 90 mm, d_m 65 mm, Y 1.74, series 323: R_1 2.38e-6, S_1 0.019), F_r 3 kN,
+     * F_a 2 kN. By hand (SKF catalogue, frictional moment; N mm, mm, r/min, mm^2/s):
+     * G_rr = 2.38e-6 65^2.38 (3000 + 10.9 1.74 2000)^0.31 = 1.321449,
+     * G_sl = 0.019 65^0.82 (3000 + 2 1.74 2000) = 5802.323.
+     * nu 13 mm^2/s, n 2000 r/min: phi_ish = 1/(1 + 1.84e-9 (130000)^1.28 13^0.64) = 0.967691,
+     * phi_rs = exp(-3e-8 13 2000 130 sqrt(6/100)) = 0.975468, phi_bl = exp(-2.6e-8 26000^1.4
+     * 65) = 0.077027, mu_sl = 0.013400: M_rr = 0.967691 0.975468 1.321449 26000^0.6 = 555.884,
+     * M_sl = 77.7514 N mm. */
+    hg_trb b = {0.040, 0.090, 1.74, 2.38e-6, 0.019};
+    double w = 2000.0 * 3.14159265358979323846 / 30.0;
+    hg_trb_moment m = hg_trb_friction(&b, 3000.0, 2000.0, 13e-6, w);
+    CHECK_CLOSE(m.M_rr, 0.55588374, 1e-7, 0);
+    CHECK_CLOSE(m.M_sl, 0.07775140, 1e-7, 0);
+    m = hg_trb_friction(&b, 3000.0, 2000.0, 13e-6, -w); /* either direction */
+    CHECK_CLOSE(m.M_rr, 0.55588374, 1e-7, 0);
+    /* turned by hand, 30 r/min in 300 mm^2/s oil: phi_bl = 0.559601, mu_sl = 0.084821, the
+     * boundary sliding now the larger part: M_rr = 308.576, M_sl = 492.158 N mm */
+    m = hg_trb_friction(&b, 3000.0, 2000.0, 300e-6, 30.0 * 3.14159265358979323846 / 30.0);
+    CHECK_CLOSE(m.M_rr, 0.30857579, 1e-7, 0);
+    CHECK_CLOSE(m.M_sl, 0.49215813, 1e-7, 0);
+    /* at rest only the boundary sliding: mu_bl G_sl = 0.15 5802.323 N mm */
+    m = hg_trb_friction(&b, 3000.0, 2000.0, 13e-6, 0.0);
+    CHECK_CLOSE(m.M_rr, 0.0, 0, 1e-15);
+    CHECK_CLOSE(m.M_sl, 0.15 * 5.8023229, 1e-7, 0);
+    /* unloaded: no moment */
+    m = hg_trb_friction(&b, 0.0, 0.0, 13e-6, w);
+    CHECK_CLOSE(m.M_rr + m.M_sl, 0.0, 0, 1e-15);
+}
+
+static void check_preload(void)
+{
+    /* 1580 N set at 20 degC, an aluminium carrier (23e-6 against steel's 11.5e-6), spread 60 mm,
+     * 1e8 N/m: -69 N/K; 40 K warmer 1580 - 2760 < 0 -> no preload left; 10 K: 890 N; a cast
+     * iron carrier (10.5e-6) tightens: 1580 + 1e8 1e-6 0.06 40 = 1820 N */
+    CHECK_CLOSE(hg_trb_preload(1580.0, 1e8, 11.5e-6, 0.06, 40.0), 0.0, 0, 1e-12);
+    CHECK_CLOSE(hg_trb_preload(1580.0, 1e8, 11.5e-6, 0.06, 10.0), 890.0, 1e-12, 0);
+    CHECK_CLOSE(hg_trb_preload(1580.0, 1e8, -1e-6, 0.06, 40.0), 1820.0, 1e-12, 0);
 }
 
 int main(void)
@@ -90,5 +120,6 @@ int main(void)
     check_components();
     check_reactions();
     check_friction();
+    check_preload();
     CHECK_DONE();
 }

@@ -266,13 +266,13 @@ def check_axle_loss(got, ref, total, mesh, others):
 def test_the_map_level_gives_the_fast_levels_axle_loss():
     """--level map (the mesh friction from the efficiency map) against the fast level (the
     friction model itself) over the first 100 s of WLTC class 3, launches included: the axle's
-    loss within 1.5 %, the mesh part within 5 %, the other parts within 1 %. Measured: -0.4 % with
-    the paper's friction; with the limiting-shear defaults, whose mesh loss is ~1.8x larger,
-    -1.08 % on maps made before the default solver became arkode_erk and -1.05 % (mesh -2.6 %)
-    on the maps regenerated with the contact moving along its line of contact, so the bound
-    stays above 1 %: the map holds the varying mesh's steady efficiency, the fast level solves
-    the rigid mesh's friction as it goes."""
-    check_axle_loss(first_100_s("map"), first_100_s("fast"), 0.015, 0.05, 0.01)
+    loss within 2.5 %, the mesh part within 10 %, the other parts within 1 %. The map holds the
+    varying mesh's steady efficiency at the torque that enters the mesh (the driving shaft's less
+    its bearings' and seals' drag), the fast level solves the rigid mesh's friction as it goes:
+    measured -2.0 % (mesh -7.7 %) with the SKF bearing model, whose drag in cold oil is larger,
+    while the map level is within 0.3 % (mesh 1.8 %) of the full level, its reference (with
+    Palmgren's moments and maps read at the shaft's torque, -1.05 %, mesh -2.6 %)."""
+    check_axle_loss(first_100_s("map"), first_100_s("fast"), 0.025, 0.10, 0.01)
 
 
 def test_the_default_level_is_the_map_level_within_the_maps_range():
@@ -309,7 +309,7 @@ def test_a_set_parameter_moves_the_default_level_to_one_it_reaches():
     one line that says so; the axle ledger's parameters keep the map level; a map of one's own
     keeps it for friction data too."""
     hot = (293.15, [293.15, 353.15])
-    assert levels.choose_level(None, *hot, {"brg_f0": 4.0, "F_pre_g": 9e3}) == ("map", None)
+    assert levels.choose_level(None, *hot, {"brg_p_S1": 0.02, "F_pre_g": 9e3}) == ("map", None)
     assert levels.choose_level(None, *hot, {"tau_0": 2e6}) == ("map", None)  # the default
     level, note = levels.choose_level(None, *hot, {"tau_0": 3e6})
     assert level == "fast" and "tau_0" in note and "map level" in note and "\n" not in note
@@ -366,7 +366,8 @@ def test_friction_data_set_at_the_default_level_reaches_the_mesh_loss(tmp_path, 
 def test_the_default_level_gives_the_full_levels_axle_loss():
     """The drive cycle's default level (map) against the full level (the paper's model) over the
     first 100 s of WLTC class 3 from a cold start, launches included: the axle's loss within 1 %
-    (the drive cycle's accuracy target; measured +0.84 % here, the launches' transients being the map's
-    worst part, +0.5 % over the whole cycle: docs/axle.md), the mesh part within 3 % (+2.1 %),
-    the others within 0.2 %."""
-    check_axle_loss(first_100_s("map"), first_100_s("full"), 0.01, 0.03, 0.002)
+    (the accuracy target; measured -0.23 % here, the launches' transients being the map's worst
+    part), the mesh part within 3 % (-1.8 %), the others within 0.5 % (the bearings +0.28 %:
+    their loss grows with the mesh load, which the full level's compliant mesh makes oscillate
+    about the rigid mesh's)."""
+    check_axle_loss(first_100_s("map"), first_100_s("full"), 0.01, 0.03, 0.005)

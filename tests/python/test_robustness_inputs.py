@@ -604,6 +604,46 @@ def test_unknown_value_references(fmu, tmp_path, tally):
 
 
 # ---------------------------------------------------------------------------------------------
+# 2b. data that each lie in their declared ranges but cannot exist together: bearings whose
+# outside diameter is not outside their bore, a preload beyond the pair's static rating, an oil
+# colder or hotter than the lubricant's data describe (docs/axle.md)
+
+
+def sets(fmu, values):
+    """Set steps for {name: value} (enumerations by item code)."""
+    by = {v["name"]: v for v in fmu["variables"]}
+    return [dict(op="set", kind=by[n]["kind"], vrs=[by[n]["vr"]], values=[x])
+            for n, x in values.items()]
+
+
+IMPOSSIBLE_AT_INIT = [  # ({name: value}, the variable and value the message must name)
+    ({"axle_losses": 2, "brg_gn_D": 0.045}, "brg_gn_D", 0.045),  # bore 50 mm
+    ({"axle_losses": 2, "brg_ph_d": 0.09}, "brg_ph_D", 0.09),   # bore = outside diameter
+    ({"axle_losses": 2, "F_pre_p": 90000.0}, "F_pre_p", 90000.0),  # 32306: C_0/Y_0 = 81 kN
+    ({"axle_losses": 2, "F_pre_g": 50000.0, "brg_g_C0": 20000.0}, "F_pre_g", 50000.0),
+    ({"T_bath": 228.15}, "T_bath", 228.15),    # -45 degC: OS265962 is a -41 degC oil
+    ({"T_bath": 463.15}, "T_bath", 463.15),    # 190 degC
+    ({"axle_losses": 2, "thermal_model": 2, "T_oil0": 220.0}, "T_oil0", 220.0),
+]
+
+
+def test_impossible_axle_and_oil_data_fail_naming_the_variable(fmu, tmp_path, tally):
+    cases = []
+    for values, name, value in IMPOSSIBLE_AT_INIT:
+        steps = reach("instantiated") + sets(fmu, values) + [dict(op="enter"),
+                                                             dict(op="exit", target=True)]
+        cases.append(Case(f"{values}", steps, judge_error(name, value=value),
+                          target=len(steps) - 1))
+    # the bath cooled below the lubricant's range while running: the next step refuses it
+    for T in (220.0, 470.0):
+        steps = reach("step_complete") + sets(fmu, {"T_bath": T}) + [
+            dict(op="step", h=1e-4, target=True)]
+        cases.append(Case(f"T_bath={T} while running", steps, judge_error("T_bath", value=T),
+                          target=len(steps) - 1))
+    settle(cases, run_cases(fmu, cases, tmp_path), tally, "impossible axle and oil data")
+
+
+# ---------------------------------------------------------------------------------------------
 # 3. data files: gear_set_file and lubricant_file
 
 
