@@ -4,8 +4,7 @@
 #include <math.h>
 
 #define HG_G 9.80665     /* standard gravity [m/s^2] */
-#define RE_C_LOW 6000.0  /* Changenet & Velex 2008: below, the 2007 formula */
-#define RE_C_HIGH 9000.0 /* above, the 2008 high-speed formula */
+#define RE_C 6000.0 /* Changenet & Velex's critical Reynolds number of the immersion */
 
 double hg_churn_submerged_area(double R_p, double b, double h)
 {
@@ -31,14 +30,10 @@ double hg_churn_cm(const hg_churn_geom *g, double nu, double omega)
     double Fr = omega * omega * g->R_p / HG_G;
     double Re = omega * g->R_p * g->b / nu;
     double Re_c = omega * g->R_p * g->h / nu;
-    double lo, hi, s;
-    if (Re_c <= RE_C_LOW) return exp(ln_cm_low(h_D, V_D3, Fr, Re));
-    if (Re_c >= RE_C_HIGH) return exp(ln_cm_high(h_D, V_D3, Fr, b_D));
-    lo = ln_cm_low(h_D, V_D3, Fr, Re);
-    hi = ln_cm_high(h_D, V_D3, Fr, b_D);
-    s = log(Re_c / RE_C_LOW) / log(RE_C_HIGH / RE_C_LOW);
-    s = s * s * (3.0 - 2.0 * s); /* smoothstep: C1 at both ends */
-    return exp(lo + s * (hi - lo));
+    if (Re_c <= RE_C) return exp(ln_cm_low(h_D, V_D3, Fr, Re));
+    /* inertial regime: no viscosity; the low-speed formula where it ends (Re at Re_c = RE_C),
+     * or the high-speed formula where that is smaller (churning.h) */
+    return exp(fmin(ln_cm_low(h_D, V_D3, Fr, RE_C * g->b / g->h), ln_cm_high(h_D, V_D3, Fr, b_D)));
 }
 
 double hg_churn_torque(const hg_churn_geom *g, double rho, double nu, double omega)

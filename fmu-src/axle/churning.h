@@ -23,14 +23,18 @@ typedef struct {
  * periphery): S_m = R_p^2 (2 theta - sin 2 theta) + 2 R_p b theta, theta = acos(1 - h/R_p). */
 double hg_churn_submerged_area(double R_p, double b, double h);
 
-/* Dimensionless churning torque C_m.
- *   Re_c = omega R_p h / nu < 6000 (Changenet & Velex 2007):
- *     C_m = 1.366 (h/D_p)^0.45 (V_0/D_p^3)^0.1 Fr^-0.6 Re^-0.21
- *   Re_c > 9000 (Changenet & Velex 2008):
- *     C_m = 3.644 (h/D_p)^0.1 (V_0/D_p^3)^-0.35 Fr^-0.88 (b/D_p)^0.85
- * with D_p = 2 R_p, Fr = omega^2 R_p / g, Re = omega R_p b / nu. Between 6000 and 9000 (the
- * transition, for which the papers give no formula) ln C_m is blended with a smoothstep in
- * ln Re_c, so that the loss is continuous with a continuous slope (our choice, docs/axle.md).
+/* Dimensionless churning torque C_m, with D_p = 2 R_p, Fr = omega^2 R_p / g, Re = omega R_p b / nu
+ * and the immersion's Reynolds number Re_c = omega R_p h / nu:
+ *   Re_c <= 6000 (Changenet & Velex 2007):
+ *     C_m = C_low(Fr, Re) = 1.366 (h/D_p)^0.45 (V_0/D_p^3)^0.1 Fr^-0.6 Re^-0.21
+ *   Re_c > 6000, the inertial regime, in which the torque no longer depends on viscosity:
+ *     C_m = min(C_low(Fr, 6000 b/h), C_high),
+ *     C_high = 3.644 (h/D_p)^0.1 (V_0/D_p^3)^-0.35 Fr^-0.88 (b/D_p)^0.85 (Changenet & Velex 2008)
+ * i.e. the low-speed formula at the Reynolds number where it ends, or the high-speed formula
+ * where that is smaller. Continuous wherever C_high >= C_low at Re_c = 6000 (every built-in
+ * ring gear at the default oil level and volume, up to 27 000 r/min of the pinion), and never
+ * increasing as the oil thins at a given speed (our choice, docs/axle.md: the two published
+ * formulas differ by 2-5 times at Re_c = 6000 for these ring gears).
  * omega [rad/s] > 0, nu [m^2/s]. */
 double hg_churn_cm(const hg_churn_geom *g, double nu, double omega);
 

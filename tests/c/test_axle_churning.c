@@ -1,6 +1,6 @@
 /* Churning torque (fmu-src/axle/churning.c) against hand calculations of Changenet and Velex's
- * formulas. The reference values were worked out by hand (a calculator session, digits kept)
- * from the printed formulas, not from this code:
+ * formulas and of the inertial regime's rule (churning.h). The reference values were worked out
+ * by hand (a calculator session, digits kept) from the printed formulas, not from this code:
  *   ring gear R_p = 82.5 mm, b = 30 mm, h = 25 mm, V_0 = 1.2 L, rho = 870 kg/m^3. */
 #include "check.h"
 #include "io/constants.h"
@@ -24,17 +24,31 @@ int main(void)
     CHECK_CLOSE(hg_churn_torque(&g, 870.0, 2.7e-4, -30.0), 8.258422e-2, 1e-6, 0);
     CHECK_CLOSE(hg_churn_torque(&g, 435.0, 2.7e-4, 30.0), 0.5 * 8.258422e-2, 1e-6, 0);
     CHECK(hg_churn_torque(&g, 870.0, 1e-4, 0.0) == 0.0);
-    /* high-speed regime (Re_c = 51563 > 9000, 2008 formula): nu = 1.2e-5, omega = 300:
-     * C_m = 3.29068e-3, C_ch = 0.581593 N m */
-    CHECK_CLOSE(hg_churn_cm(&g, 1.2e-5, 300.0), 3.290680e-3, 1e-6, 0);
-    CHECK_CLOSE(hg_churn_torque(&g, 870.0, 1.2e-5, 300.0), 0.5815931, 1e-6, 0);
-    /* the transition blend meets each formula at its end: just below Re_c = 6000 and just above
-     * 9000 the value is continuous (relative step of a 1e-9 change in speed) */
+    /* inertial regime (Re_c = 51563 > 6000): nu = 1.2e-5, omega = 300, Fr = 757.139: the
+     * 2007 formula at Re = 6000 b/h = 7200, C_m = 1.485195e-3, C_ch = 0.2624926 N m; the 2008
+     * high-speed formula gives 3.290680e-3, 2.2 times more, and is not taken */
+    CHECK_CLOSE(hg_churn_cm(&g, 1.2e-5, 300.0), 1.485195e-3, 1e-6, 0);
+    CHECK_CLOSE(hg_churn_torque(&g, 870.0, 1.2e-5, 300.0), 0.2624926, 1e-6, 0);
+    /* ... where it does not depend on the viscosity */
+    CHECK_CLOSE(hg_churn_cm(&g, 0.6e-5, 300.0), 1.485195e-3, 1e-6, 0);
+    /* a sump of 12 L: the 2008 formula is now the smaller (1.469893e-3 against 1.869750e-3) */
     {
-        double nu = 1.2e-5, w6 = 6000.0 * nu / (g.R_p * g.h), w9 = 9000.0 * nu / (g.R_p * g.h);
-        double e = 1e-9;
+        hg_churn_geom big = {0.0825, 0.030, 0.025, 12e-3};
+        CHECK_CLOSE(hg_churn_cm(&big, 1.2e-5, 300.0), 1.469893e-3, 1e-6, 0);
+    }
+    /* continuous at Re_c = 6000 (relative step of a 1e-9 change in speed or viscosity), and at
+     * a given speed never larger in thinner oil: 40 viscosities from 1e-3 to 1e-6 m^2/s at the
+     * ring speed of 4000 r/min of the pinion */
+    {
+        double nu = 1.2e-5, w6 = 6000.0 * nu / (g.R_p * g.h), e = 1e-9, prev = 1e300;
+        int k;
         CHECK_CLOSE(hg_churn_cm(&g, nu, w6 * (1 + e)), hg_churn_cm(&g, nu, w6 * (1 - e)), 1e-7, 0);
-        CHECK_CLOSE(hg_churn_cm(&g, nu, w9 * (1 + e)), hg_churn_cm(&g, nu, w9 * (1 - e)), 1e-7, 0);
+        CHECK_CLOSE(hg_churn_cm(&g, nu * (1 + e), w6), hg_churn_cm(&g, nu * (1 - e), w6), 1e-7, 0);
+        for (k = 0; k < 40; k++) {
+            double c = hg_churn_cm(&g, 1e-3 * pow(1e-3, k / 39.0), 151.2);
+            CHECK(c <= prev);
+            prev = c;
+        }
     }
     CHECK_DONE();
 }
