@@ -146,12 +146,12 @@ def step_diagnosis(fmu, scene):
         for rtol in (1e-3, 1e-6):
             values = W.start_values(fmu, scene, "_diag", W.Setting("bdf", rtol))
             values["max_step"] = 1.0
-            inst = W.Instance(fmu)
+            inst = W.instance(fmu)
             try:
-                inst.init(values)
+                inst.start(values)
                 c0 = time.process_time()
                 for k in range(int(round(scene.t_end / W.COMM))):
-                    inst.s.doStep(k * W.COMM, W.COMM)
+                    inst.slave.doStep(k * W.COMM, W.COMM)
                 cpu = time.process_time() - c0
                 steps, evals = inst.ints(["solver_steps", "rhs_evals"])
                 cycles = scene.f_mesh * scene.t_end
@@ -159,9 +159,9 @@ def step_diagnosis(fmu, scene):
                                           rhs_per_cycle=evals / cycles, rtf=scene.t_end / cpu,
                                           us_per_rhs=1e6 * cpu / max(evals, 1))
             except W.FMICallException:
-                row[f"{rtol:.0e}"] = dict(failed=inst.error_text()[:200])
+                row[f"{rtol:.0e}"] = dict(failed=W.error_text(inst)[:200])
             finally:
-                inst.free()
+                inst.close()
         out.append(row)
     W.LEVELS.pop("_diag", None)
     return out

@@ -26,12 +26,11 @@ from dataclasses import dataclass, field
 import numpy as np
 from fmpy.fmi1 import FMICallException as _RawCallError
 
-from hypoid.fmu import instance as hypoid_instance
-from hypoid.fmu.instance import FmuError, unzipped
+from hypoid.fmu.instance import FmuError, Instance, unzipped
 from hypoid.fmu.levels import LEVELS as _LEVELS
 from hypoid.fmu.values import RPM
 
-FMICallException = (_RawCallError, FmuError)  # a failed call, raw (inst.s) or through Instance
+FMICallException = (_RawCallError, FmuError)  # a failed call, raw (inst.slave) or via Instance
 COMM = 0.05          # [s] communication step of the timed runs (window bounds are multiples)
 FINE_PER_CYCLE = 64  # samples per mesh cycle of the fine runs (CVODE)
 
@@ -152,7 +151,7 @@ class Fmu:
     def __init__(self, path, map_file=None):
         self.path = str(path)
         self.dir = str(unzipped(self.path))
-        probe = hypoid_instance.Instance(self.dir, name="wp-probe")
+        probe = Instance(self.dir, name="wp-probe")
         self.md, self.vr = probe.md, {n: v.vr for n, v in probe.vars.items()}
         probe.close()
         self.map_file = map_file  # efficiency_map_file for the map level, if not built in
@@ -165,24 +164,14 @@ class RunError(Exception):
     pass
 
 
-class Instance(hypoid_instance.Instance):
-    """hypoid.fmu.instance.Instance with the benchmark's names: `s` the raw slave, init/free."""
+def instance(fmu, name="wp"):
+    """An instance of the benchmark's FMU (hypoid.fmu.instance.Instance on the unzipped copy); the
+    timed loops call its raw slave's doStep, as a host does, without the Instance's error layer."""
+    return Instance(fmu.dir, name=name)
 
-    def __init__(self, fmu, name="wp"):
-        super().__init__(fmu.dir, name=name)
-        self.fmu, self.s = fmu, self.slave
 
-    def set(self, values):
-        self.set_many(values)
-
-    def init(self, values):
-        self.start(values)
-
-    def error_text(self):
-        return "; ".join(m[2] for m in self.errors())[-400:]
-
-    def free(self):
-        self.close()
+def error_text(inst):
+    return "; ".join(m[2] for m in inst.errors())[-400:]
 
 
 def start_values(fmu, scene, level, setting):
@@ -200,18 +189,18 @@ ENERGY = ["E_in", "E_out", "E_friction", "E_damping", "E_excitation", "E_stored"
 def timed_run(fmu, scene, level, setting):
     """One run over [0, t_end] with COMM steps; returns (cpu of the stepping only, records at each
     communication point: time, T_s in force, energies, eta_cycle; counters at the end)."""
-    inst = Instance(fmu)
+    inst = instance(fmu)
     try:
-        inst.init(start_values(fmu, scene, level, setting))
+        inst.start(start_values(fmu, scene, level, setting))
         n = int(round(scene.t_end / COMM))
         events = {int(round(te / COMM)): v for te, v in scene.events}
         recs = [(0.0, scene.torque_at(0.0)) + tuple(inst.reals(ENERGY + ["eta_cycle"]))]
         cpu = 0.0
         for k in range(n):
             if k in events:
-                inst.set(events[k])
+                inst.set_many(events[k])
             c0 = time.process_time()
-            inst.s.doStep(k * COMM, COMM)
+            inst.slave.doStep(k * COMM, COMM)
             cpu += time.process_time() - c0
             t = (k + 1) * COMM
             recs.append((t, scene.torque_at(t)) + tuple(inst.reals(ENERGY + ["eta_cycle"])))
@@ -219,9 +208,9 @@ def timed_run(fmu, scene, level, setting):
                             inst.ints(["solver_steps", "rhs_evals", "n_impacts"])))
         return cpu, np.array(recs), counters
     except FMICallException as e:
-        raise RunError(f"{e}: {inst.error_text()}") from None
+        raise RunError(f"{e}: {error_text(inst)}") from None
     finally:
-        inst.free()
+        inst.close()
 
 
 def fine_dt(scene, setting):
@@ -233,26 +222,26 @@ def fine_dt(scene, setting):
 def fine_run(fmu, scene, level, setting):
     """Samples DTE and contact over the whole run; returns (t, DTE, contact) arrays."""
     dt, per_comm = fine_dt(scene, setting)
-    inst = Instance(fmu)
+    inst = instance(fmu)
     vr_dte, vr_contact = [fmu.vr["DTE"]], [fmu.vr["contact"]]
     try:
-        inst.init(start_values(fmu, scene, level, setting))
+        inst.start(start_values(fmu, scene, level, setting))
         events = {int(round(te / COMM)) * per_comm: v for te, v in scene.events}
         n = int(round(scene.t_end / COMM)) * per_comm
         ts, xs, cs = np.empty(n), np.empty(n), np.empty(n, dtype=int)
-        s = inst.s
+        s = inst.slave
         for k in range(n):
             if k in events:
-                inst.set(events[k])
+                inst.set_many(events[k])
             s.doStep(k * dt, dt)
             ts[k] = (k + 1) * dt
             xs[k] = s.getReal(vr_dte)[0]
             cs[k] = s.getInteger(vr_contact)[0]
         return ts, xs, cs
     except FMICallException as e:
-        raise RunError(f"{e}: {inst.error_text()}") from None
+        raise RunError(f"{e}: {error_text(inst)}") from None
     finally:
-        inst.free()
+        inst.close()
 
 
 def coarse_metrics(scene, recs, counters):
@@ -312,22 +301,22 @@ def steady_rtf(fmu, scene, level, setting, comm, span=2.0, settle=0.2, repeats=3
     timed), `span` s in communication steps of `comm` s; median of `repeats` runs."""
     cpus, counts = [], None
     for _ in range(repeats):
-        inst = Instance(fmu)
+        inst = instance(fmu)
         try:
-            inst.init(start_values(fmu, scene, level, setting))
-            inst.s.doStep(0.0, settle)
+            inst.start(start_values(fmu, scene, level, setting))
+            inst.slave.doStep(0.0, settle)
             s0 = inst.ints(["solver_steps", "rhs_evals"])
             n = int(round(span / comm))
             c0 = time.process_time()
             for k in range(n):
-                inst.s.doStep(settle + k * comm, comm)
+                inst.slave.doStep(settle + k * comm, comm)
             cpus.append(time.process_time() - c0)
             s1 = inst.ints(["solver_steps", "rhs_evals"])
             counts = ((s1[0] - s0[0]) / span, (s1[1] - s0[1]) / span)
         except FMICallException as e:
-            raise RunError(f"{e}: {inst.error_text()}") from None
+            raise RunError(f"{e}: {error_text(inst)}") from None
         finally:
-            inst.free()
+            inst.close()
     cpu = statistics.median(cpus)
     return dict(level=level, label=setting.label, comm=comm, rtf=span / cpu,
                 us_per_step=1e6 * cpu / n, steps_per_s=counts[0], rhs_per_s=counts[1])
@@ -338,15 +327,15 @@ def steady_rtf(fmu, scene, level, setting, comm, span=2.0, settle=0.2, repeats=3
 
 def step_overhead(fmu, n=20000):
     """CPU per fmi2DoStep call that does no work (h = 0): the host-side cost through fmpy."""
-    inst = Instance(fmu)
+    inst = instance(fmu)
     try:
-        inst.init({})
+        inst.start({})
         c0 = time.process_time()
         for _ in range(n):
-            inst.s.doStep(0.0, 0.0)
+            inst.slave.doStep(0.0, 0.0)
         return (time.process_time() - c0) / n
     finally:
-        inst.free()
+        inst.close()
 
 
 def rss_bytes():

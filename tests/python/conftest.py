@@ -1,5 +1,5 @@
-"""Shared fixtures for the FMU tests: the built FMU, its extracted copy, and a small harness
-on hypoid.fmu.instance.Instance that records log messages and drives steps."""
+"""Shared fixtures for the FMU tests: the built FMU, its extracted copy, and instances of it
+(hypoid.fmu.instance.Instance, the one FMU access class) that keep every log message."""
 
 import pathlib
 import shutil
@@ -7,7 +7,7 @@ import shutil
 import pytest
 from fmpy import extract, read_model_description
 
-from hypoid.fmu.instance import RAW, Instance
+from hypoid.fmu.instance import Instance
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 FMU_PATH = ROOT / "build" / "HypoidGearPair.fmu"
@@ -32,53 +32,20 @@ def model_description(fmu_path):
     return read_model_description(str(fmu_path))
 
 
-class Harness(Instance):
-    """One FMU instance driven step by step (hypoid.fmu.instance.Instance); `fmu` is the raw fmpy
-    slave, `set` passes values to the FMU unchecked (its own checks are under test) and
-    `messages` collects (status, category, text)."""
-
-    def __init__(self, unzipped, name="instance", logging=False):
-        super().__init__(unzipped, name=name, logging=logging, keep_messages=10 ** 6)
-        self.fmu = self.slave
-
-    def set(self, **values):
-        for name, value in values.items():
-            var = self.table.variable(name.replace("__", "."))
-            self.set_raw(var, RAW[var.type](value))
-
-    def get(self, *names):
-        out = [Instance.get(self, name) for name in names]
-        return out[0] if len(out) == 1 else out
-
-    def init(self, start=0.0, **values):
-        self.used = True
-        self._call(self.fmu.setupExperiment, startTime=start)
-        self.set(**values)
-        self._call(self.fmu.enterInitializationMode)
-        self._call(self.fmu.exitInitializationMode)
-        self.t = start
-        return self
-
-    def run(self, t_end, h, names):
-        """Steps to t_end with step h; returns an array of the named outputs after each step."""
-        return self.record(t_end, h, names)
-
-    def free(self):
-        self.close(terminate=False)
-
-
 @pytest.fixture
 def harness(unzipped):
+    """make(name=..., logging=...): FMU instances (hypoid.fmu.instance.Instance, every log message
+    kept) that the test drives call by call; freed at the end without fmi2Terminate."""
     made = []
 
-    def make(**kwargs):
-        h = Harness(unzipped, **kwargs)
+    def make(name="instance", logging=False):
+        h = Instance(unzipped, name=name, logging=logging, keep_messages=10 ** 6)
         made.append(h)
         return h
 
     yield make
     for h in made:
-        h.free()
+        h.close(terminate=False)
 
 
 @pytest.fixture

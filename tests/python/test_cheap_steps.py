@@ -36,8 +36,8 @@ def start(harness, level, name="run", **extra):
     """An initialised instance of the level (enumeration items by name) with extra values."""
     x = harness(name=name)
     values = {**LEVELS[level], **extra}
-    return x.init(**{k: x.enum_value(k, v) if isinstance(v, str) else v
-                     for k, v in values.items()})
+    return x.start({k: x.enum_value(k, v) if isinstance(v, str) else v
+                     for k, v in values.items()}, checked=False)
 
 
 def run(harness, level, torque, n, h, derivative=None, name="run", **extra):
@@ -47,10 +47,10 @@ def run(harness, level, torque, n, h, derivative=None, name="run", **extra):
     e0 = x.get("E_stored")
     rows = []
     for _ in range(n):
-        x.set(T_s=torque(x.t))
+        x.set_unchecked(dict(T_s=torque(x.t)))
         if derivative is not None:
-            x.fmu.setRealInputDerivatives([x.ref("T_s")], [1], [derivative(x.t)])
-        rows.append(list(x.run(x.t + h, h, REALS)[0]) + list(x.ints(COUNTERS)))
+            x.slave.setRealInputDerivatives([x.ref("T_s")], [1], [derivative(x.t)])
+        rows.append(list(x.record(x.t + h, h, REALS)[0]) + list(x.ints(COUNTERS)))
     rows = np.array(rows)
     rows[:, OUT.index("E_stored")] -= e0
     return rows, x
@@ -134,11 +134,11 @@ def test_held_inputs_pass_the_step_ends_at_the_map_level(harness):
     give eta_cycle within 0.01 %-point of the tight solution."""
     names = ["eta_cycle", "eta", "w_p", "E_in", "E_friction"]
     x = start(harness, "map")
-    x.run(0.1, 1e-3, names)
+    x.record(0.1, 1e-3, names)
     steps_0 = x.ints(["solver_steps"])[0]
-    rows = x.run(0.5, 1e-3, names)
+    rows = x.record(0.5, 1e-3, names)
     steps_held = x.ints(["solver_steps"])[0] - steps_0  # after the start-up: 400 steps of 1 ms
-    tight = start(harness, "map", "tight", **TIGHT).run(0.5, 1e-3, names)
+    tight = start(harness, "map", "tight", **TIGHT).record(0.5, 1e-3, names)
     assert rows[-1, 0] < 1.0  # windows completed
     assert abs(rows[-1, 0] - tight[-1, 0]) < 1e-4
     assert rows[-1, 3] == pytest.approx(tight[-1, 3], rel=1e-5)
@@ -156,13 +156,13 @@ def test_the_explicit_method_passes_held_step_ends(harness):
     counts, dte = {}, {}
     for h in (0.5e-3, 1e-3):
         x = start(harness, "full", f"h{h}", tooth_data="loaded")
-        x.run(0.1, h, names)
+        x.record(0.1, h, names)
         steps_0 = x.ints(["solver_steps"])[0]
-        dte[h] = x.run(0.3, h, names)[:, 0]
+        dte[h] = x.record(0.3, h, names)[:, 0]
         counts[h] = x.ints(["solver_steps"])[0] - steps_0
     tight = start(harness, "full", "tight", tooth_data="loaded", rtol=1e-10, atol=1e-14)
-    tight.run(0.1, 1e-3, names)
-    ref = tight.run(0.3, 1e-3, names)[:, 0]
+    tight.record(0.1, 1e-3, names)
+    ref = tight.record(0.3, 1e-3, names)[:, 0]
     assert counts[0.5e-3] == pytest.approx(counts[1e-3], rel=0.02)
     assert counts[1e-3] > 1.1 * 0.2 * 6000  # the error test, not the 1/6 ms limit, sets them
     assert np.max(np.abs(dte[1e-3] - ref)) < 0.05e-6
@@ -179,16 +179,16 @@ def test_state_round_trip_while_continuing_is_bit_identical(harness, level, deri
         out = []
         for k in range(k0, k1):
             if derivative is not None:
-                x.set(T_s=100.0 + derivative * x.t)
-                x.fmu.setRealInputDerivatives([x.ref("T_s")], [1], [derivative])
-            out.append(x.run(x.t + 1e-3, 1e-3, names)[0])
+                x.set_unchecked(dict(T_s=100.0 + derivative * x.t))
+                x.slave.setRealInputDerivatives([x.ref("T_s")], [1], [derivative])
+            out.append(x.record(x.t + 1e-3, 1e-3, names)[0])
         return np.array(out)
 
     go(0, 60)
-    state, t_state = x.fmu.getFMUstate(), x.t
+    state, t_state = x.slave.getFMUstate(), x.t
     first = go(60, 100)
-    x.fmu.setFMUstate(state)
+    x.slave.setFMUstate(state)
     x.t = t_state
     second = go(60, 100)
-    x.fmu.freeFMUstate(state)
+    x.slave.freeFMUstate(state)
     assert np.array_equal(first, second)

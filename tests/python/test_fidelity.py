@@ -158,10 +158,10 @@ def test_map_level_reproduces_the_full_model(fmu_path, rpm, torque, bath_c):
 
 def test_map_level_needs_the_rigid_mesh(harness):
     h = harness()
-    h.fmu.setupExperiment(startTime=0.0)
-    h.set(friction_model=5)
-    h.fmu.enterInitializationMode()
+    h.slave.setupExperiment(startTime=0.0)
+    h.set_unchecked(dict(friction_model=5))
+    h.slave.enterInitializationMode()
     from fmpy.fmi1 import FMICallException
     with pytest.raises(FMICallException):
-        h.fmu.exitInitializationMode()
+        h.slave.exitInitializationMode()
     assert any("mesh_model = rigid" in m[2] for m in h.messages)

@@ -82,13 +82,13 @@ def test_ring_down_matches_modal_analysis(harness):
     the spectral peaks sit at the modal analysis frequencies (calculated parameters f_2, f_3)
     which match docs/physics.md §8.4 (260.8 / 433.3 Hz)."""
     h = harness()
-    h.init(mesh_model=1, friction_model=1, load_mode=1, w_p0=0.0, zeta_2=1e-3, zeta_3=1e-3,
-           zeta_4=1e-3, T_s=100.0, T_w=100.0 * 36 / 13, tooth_data=PAPER_DATA)
-    f2, f3, f4 = h.get("f_2", "f_3", "f_4")
+    h.start(dict(mesh_model=1, friction_model=1, load_mode=1, w_p0=0.0, zeta_2=1e-3, zeta_3=1e-3,
+           zeta_4=1e-3, T_s=100.0, T_w=100.0 * 36 / 13, tooth_data=PAPER_DATA), checked=False)
+    f2, f3, f4 = h.reals(["f_2", "f_3", "f_4"])
     assert (f2, f3, f4) == pytest.approx(PHYSICS_F[1], rel=2e-3)
-    h.set(T_s=0.0, T_w=0.0)
+    h.set_unchecked(dict(T_s=0.0, T_w=0.0))
     dt = 2e-5
-    x = h.run(1.0, dt, ["DTE"])[:, 0]
+    x = h.record(1.0, dt, ["DTE"])[:, 0]
     spectrum = np.abs(np.fft.rfft((x - x.mean()) * np.hanning(len(x)), n=8 * len(x)))
     freqs = np.fft.rfftfreq(8 * len(x), dt)
     for f in (f2, f3, f4):

@@ -232,8 +232,9 @@ def test_data_sheet_file_runs_in_the_fmu(tmp_path, harness):
 
     def mean_mu(**values):
         h = harness()
-        h.init(T_s=100.0, w_set=2000 * math.pi / 30, w_p0=2000 * math.pi / 30, **values)
-        rows = h.run(0.02, 1e-3, ["P_loss", "pair[1].mu"])
+        w = 2000 * math.pi / 30
+        h.start(dict(T_s=100.0, w_set=w, w_p0=w, **values), checked=False)
+        rows = h.record(0.02, 1e-3, ["P_loss", "pair[1].mu"])
         assert not h.errors(), h.errors()
         return rows[-5:, 1].mean(), rows[-5:, 0].mean()
 

@@ -22,8 +22,8 @@ H = 1e-3
 
 def start(harness, name, level="full", logging=False):
     x = harness(name=name, logging=logging)
-    return x.init(**{k: x.enum_value(k, v) if isinstance(v, str) else v
-                     for k, v in LEVELS[level].items()})
+    return x.start({k: x.enum_value(k, v) if isinstance(v, str) else v
+                     for k, v in LEVELS[level].items()}, checked=False)
 
 
 def read_all(x, ints=INTS):
@@ -65,7 +65,7 @@ def test_pair_outputs_are_the_direct_solve_and_the_main_ones_the_table(harness):
     1.5e-3 of a pair's friction): P_loss (the table, as integrated into E_friction) against the
     pairs' mu W V_s (each pair's friction model solved); the split of P_loss adds up to it."""
     x = start(harness, "x")
-    x.run(0.02, H, ["w_p"])
+    x.record(0.02, H, ["w_p"])
     for _ in range(8):
         x.step(H / 4)
         mu, W, V_s = (np.array(x.reals([f"pair[{k}].{q}" for k in (1, 2, 3)]))
@@ -80,8 +80,8 @@ def test_a_restored_state_gives_its_outputs_after_a_new_friction_table(harness):
     another friction table; the restored state reads the outputs it had (on the table it ran on,
     built again) and continues bit for bit as it did the first time."""
     x = start(harness, "x", logging=True)
-    x.run(0.02, H, ["w_p"])
-    state, t_state = x.fmu.getFMUstate(), x.t
+    x.record(0.02, H, ["w_p"])
+    state, t_state = x.slave.getFMUstate(), x.t
 
     def outputs_and_ten_steps():
         out = [read_all(x, STATE_INTS)]
@@ -92,12 +92,12 @@ def test_a_restored_state_gives_its_outputs_after_a_new_friction_table(harness):
 
     first = outputs_and_ten_steps()
     built = tables_built(x)
-    x.set(T_bath=x.get("T_bath") + 5.0)
-    x.run(x.t + 5 * H, H, ["w_p"])
+    x.set_unchecked(dict(T_bath=x.get("T_bath") + 5.0))
+    x.record(x.t + 5 * H, H, ["w_p"])
     assert tables_built(x) == built + 1  # the warmer bath's
-    x.fmu.setFMUstate(state)
+    x.slave.setFMUstate(state)
     x.t = t_state
-    x.fmu.freeFMUstate(state)
+    x.slave.freeFMUstate(state)
     assert np.array_equal(read_all(x, STATE_INTS), first[0])
     assert tables_built(x) == built + 2  # the state's own again
     assert np.array_equal(outputs_and_ten_steps(), first)

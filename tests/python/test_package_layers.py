@@ -100,3 +100,16 @@ def test_scripts_use_public_names_only():
                     if any(part.startswith("_") for part in node.module.split(".")):
                         wrong.append(f"{path.relative_to(ROOT)}: {node.module}")
     assert not wrong, wrong
+
+
+def test_one_fmu_access_class():
+    """hypoid.fmu.instance.Instance is the one way tools, tests and benchmarks reach an FMU:
+    nothing subclasses it to give it other names (raw fmpy calls go through its `slave`)."""
+    wrong = []
+    for folder in ("hypoid", "tests", "bench", "tools", "examples"):
+        for path in sorted((ROOT / folder).rglob("*.py")):
+            for node in ast.walk(ast.parse(path.read_text())):
+                if isinstance(node, ast.ClassDef) and any(
+                        ast.unparse(base).split(".")[-1] == "Instance" for base in node.bases):
+                    wrong.append(f"{path.relative_to(ROOT)}: class {node.name}")
+    assert not wrong, wrong

@@ -34,24 +34,24 @@ def warnings(h):
 ])
 def test_warnings_at_initialisation(harness, values, expected):
     h = harness()
-    h.init(**values)
+    h.start(values, checked=False)
     got = warnings(h)
     assert len(got) == (1 if expected else 0), got
     for part in expected:
         assert part in got[0], got
-    h.run(0.002, 1e-3, ["w_p"])  # a warning is not an error: the run goes on
+    h.record(0.002, 1e-3, ["w_p"])  # a warning is not an error: the run goes on
     assert not h.errors()
 
 
 def test_range_messages_carry_units(harness):
     h = harness()
-    h.fmu.setupExperiment(startTime=0.0)
+    h.slave.setupExperiment(startTime=0.0)
     with pytest.raises(FmuError):
-        h.set(T_bath=40.0)
+        h.set_unchecked(dict(T_bath=40.0))
     with pytest.raises(FmuError):
-        h.set(w_set=5000.0)
+        h.set_unchecked(dict(w_set=5000.0))
     with pytest.raises(FmuError):
-        h.set(rtol=1.0)
+        h.set_unchecked(dict(rtol=1.0))
     texts = [m[2] for m in h.errors()]
     assert "T_bath = 40 K (-233.15 degC) is outside its range [200, 500] K" in texts[0]
     assert "w_set = 5000 rad/s (47746.5 rpm) is outside its range [-2000, 2000] rad/s" in texts[1]
@@ -61,7 +61,7 @@ def test_range_messages_carry_units(harness):
 def run(harness, t_end, h_step, **values):
     """The deflection outputs after each step: {name: array}."""
     h = harness()
-    h.init(**values)
+    h.start(values, checked=False)
     reals = ["DTE", "DTE_elastic", "W_t", "k_m"]
     rows, contact = [], []
     for _ in range(int(round(t_end / h_step))):
@@ -128,6 +128,6 @@ def test_data_file_range_messages_carry_units(harness, tmp_path):
     bad.write_text(oil.read_text().replace("\nk_f 0.18", "\nk_f 50"))
     h = harness()
     with pytest.raises(FmuError):
-        h.init(lubricant_file=str(bad))
+        h.start(dict(lubricant_file=str(bad)), checked=False)
     assert any("key 'k_f' = 50 W/(m K) is outside [0.01, 10] W/(m K)" in m[2]
                for m in h.errors()), h.errors()
