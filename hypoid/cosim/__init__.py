@@ -1,1 +1,2 @@
-"""Co-simulation masters: the libcosim driver (`libcosim`)."""
+"""Co-simulation masters of the gear FMU and a vehicle FMU: the package's own (`master`, fmpy)
+and libcosim's (`libcosim`)."""
