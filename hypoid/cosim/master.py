@@ -10,7 +10,15 @@ the gear steps first and the vehicle steps with the gear's new w_w.
 
 Initialisation: both FMUs set up and given their start values; with `init_passes` > 0 the
 coupled inputs go around the loop that many times in initialisation mode (libcosim's way: one
-pass per FMU), else each FMU initialises on its start values alone."""
+pass per FMU), else each FMU initialises on its start values alone.
+
+With `ramp`, the gear's inputs reach it as ramps (fmi2SetRealInputDerivatives): over [t, t + h]
+each goes linearly from where the last step's ramp ended to its value of t, a first-order hold
+one step late, so that they never jump and the gear FMU's integrator never restarts for them
+(docs/model.md, "Steps without restarts"; held values jump at every step, and each jump restarts
+it). The ramp's end is value + slope h, the sum the FMU forms, to the bit."""
+
+import math
 
 from hypoid.fmu.instance import Instance
 
@@ -22,6 +30,17 @@ def _start(inst, values, name):
     return float(values.get(name, inst.table.variable(name).start))
 
 
+def ramp_slope(a, b, h, lo=-math.inf, hi=math.inf):
+    """The slope from a to b over h whose end a + slope h (in floating point, as the FMU forms it)
+    stays within [lo, hi]: (b - a) / h, moved by an ulp where rounding would leave a bound."""
+    slope = (b - a) / h
+    while a + slope * h < lo:
+        slope = math.nextafter(slope, math.inf)
+    while a + slope * h > hi:
+        slope = math.nextafter(slope, -math.inf)
+    return slope
+
+
 class GearVehicle:
     """Two instances, `gear` and `vehicle`; step() returns the outputs (gear_out, vehicle_out) as
     lists of floats in the order given. A wheel speed below `w_rest` (rad/s) reaches the vehicle as
@@ -30,18 +49,26 @@ class GearVehicle:
 
     def __init__(self, gear_fmu, vehicle_fmu, gear_start, vehicle_start, gear_out, vehicle_out,
                  gear_inputs=("T_s",), vehicle_inputs=(), algorithm="jacobi", init_passes=0,
-                 w_rest=0.0):
+                 w_rest=0.0, ramp=False):
         if algorithm not in ALGORITHMS:
             raise ValueError(f"algorithm {algorithm!r}: one of {', '.join(ALGORITHMS)}")
-        self.algorithm, self.w_rest = algorithm, w_rest
+        self.algorithm, self.w_rest, self.ramp = algorithm, w_rest, ramp
         self.gear = Instance(gear_fmu, name="gear")
         self.vehicle = Instance(vehicle_fmu, name="vehicle")
         self.g_out, self.v_out = self.gear.refs(gear_out), self.vehicle.refs(vehicle_out)
         self.gear_inputs, self.vehicle_inputs = list(gear_inputs), list(vehicle_inputs)
-        self.g_in = self.gear.refs([*gear_inputs, "T_w"])
+        g_in_names = [*gear_inputs, "T_w"]
+        self.g_in = self.gear.refs(g_in_names)
         self.v_in = self.vehicle.refs(["w_w", *vehicle_inputs])
         self.i_ww, self.i_ths = list(gear_out).index("w_w"), list(vehicle_out).index("T_hs")
         self._initialize(gear_start, vehicle_start, init_passes)
+        # the hot loop: straight through ctypes (hypoid.fmu.instance.FastIo)
+        self._g_io = self.gear.fast_io(gear_out, inputs=g_in_names)
+        self._v_io = self.vehicle.fast_io(vehicle_out, inputs=["w_w", *vehicle_inputs])
+        bounds = [self.gear.table.variable(n) for n in g_in_names]
+        self._g_bounds = [(-math.inf if v.min is None else float(v.min),
+                           math.inf if v.max is None else float(v.max)) for v in bounds]
+        self._g_end = list(self.gear.get_reals(self.g_in))  # where the inputs stand
 
     def _initialize(self, gear_start, vehicle_start, passes):
         for inst, values in ((self.gear, gear_start), (self.vehicle, vehicle_start)):
@@ -73,24 +100,35 @@ class GearVehicle:
     def _read(self):
         return self.gear.get_reals(self.g_out), self.vehicle.get_reals(self.v_out)
 
+    def _gear_inputs(self, values, h):
+        """The gear's inputs for a step of h: held, or as ramps from where they stand to values."""
+        if not self.ramp:
+            self._g_io.set_inputs(values)
+            return
+        start = self._g_end
+        slopes = [ramp_slope(a, b, h, lo, hi)
+                  for a, b, (lo, hi) in zip(start, values, self._g_bounds)]
+        self._g_io.set_inputs(start)
+        self._g_io.set_derivatives(slopes)
+        self._g_end = [a + s * h for a, s in zip(start, slopes)]
+
     def step(self, t, h, gear_inputs=(), vehicle_inputs=(), T_w_add=0.0):
         """One communication step over [t, t + h] with the callers' inputs (in the order of
         gear_inputs and vehicle_inputs); the outputs at t + h. T_w_add (N m) is added to the
         vehicle's T_hs on its way to the gear's T_w: a load the caller models (a route's grade)."""
         g, v = self.outputs
+        self._gear_inputs([*gear_inputs, v[self.i_ths] + T_w_add], h)
         if self.algorithm == "jacobi":
-            self._set_inputs(gear_inputs, v[self.i_ths] + T_w_add, vehicle_inputs,
-                             g[self.i_ww])
-            self.gear.do_step(t, h)
-            self.vehicle.do_step(t, h)
-            self.outputs = self._read()
+            self._v_io.set_inputs([self._to_vehicle(g[self.i_ww]), *vehicle_inputs])
+            self._g_io.step(t, h)
+            self._v_io.step(t, h)
+            self.outputs = self._g_io.reals(), self._v_io.reals()
             return self.outputs
-        self.gear.set_reals(self.g_in, [*gear_inputs, v[self.i_ths] + T_w_add])
-        self.gear.do_step(t, h)
-        g = self.gear.get_reals(self.g_out)
-        self.vehicle.set_reals(self.v_in, [self._to_vehicle(g[self.i_ww]), *vehicle_inputs])
-        self.vehicle.do_step(t, h)
-        self.outputs = g, self.vehicle.get_reals(self.v_out)
+        self._g_io.step(t, h)
+        g = self._g_io.reals()
+        self._v_io.set_inputs([self._to_vehicle(g[self.i_ww]), *vehicle_inputs])
+        self._v_io.step(t, h)
+        self.outputs = g, self._v_io.reals()
         return self.outputs
 
     def close(self):

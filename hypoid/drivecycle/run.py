@@ -65,9 +65,10 @@ def progress(total, label):
 GEAR_INPUTS, VEHICLE_INPUTS = ("T_s", "v_air"), ("T_brake",)
 
 
-def fmpy_master(gear_fmu, vehicle_fmu, gear_values, vehicle_values, h, w_rest=0.0):
+def fmpy_master(gear_fmu, vehicle_fmu, gear_values, vehicle_values, h, w_rest=0.0, ramp=True):
     return master.GearVehicle(gear_fmu, vehicle_fmu, gear_values, vehicle_values, GEAR_OUT,
-                              VEHICLE_OUT, GEAR_INPUTS, VEHICLE_INPUTS, w_rest=w_rest)
+                              VEHICLE_OUT, GEAR_INPUTS, VEHICLE_INPUTS, w_rest=w_rest,
+                              ramp=ramp)
 
 
 def libcosim_master(gear_fmu, vehicle_fmu, gear_values, vehicle_values, h):
@@ -89,17 +90,18 @@ def _driver(gear, vehicle):
 
 
 def simulate(cycle, gear_fmu, vehicle_fmu, level, T_oil0, T_amb, h, extra, label,
-             vehicle=None, master="fmpy", until=None):
+             vehicle=None, master="fmpy", until=None, ramp=True):
     """One co-simulation over the cycle (up to `until` s if given) in the named master; the
     recorded outputs at every communication point. The state at t = 0 and the driver's data
     come from fmpy's initialisation in both masters: libcosim initialises inside its first
-    step and cannot be read before it."""
+    step and cannot be read before it. fmpy's master gives the gear its inputs as ramps
+    (hypoid.cosim.master.GearVehicle's `ramp`, unless ramp is False); libcosim holds them."""
     vehicle = (vehicle or Vehicle()).for_air(T_amb, fmu_parameters(vehicle_fmu))
     wall = time.perf_counter()
     I_w0 = float(TABLE.variable("I_w").start)
     g_values = gear_start(level, vehicle, I_w0, T_oil0, T_amb, extra)
     m = fmpy_master(gear_fmu, vehicle_fmu, g_values, vehicle.fmu_values(), h,
-                    vehicle.v_rest / vehicle.r_dyn)
+                    vehicle.v_rest / vehicle.r_dyn, ramp)
     driver, (gv, vv) = _driver(m.gear, vehicle), m.outputs
     driveline = {n: float(m.gear.get(n)) for n in DRIVELINE_RECORD}
     if master != "fmpy":

@@ -301,6 +301,8 @@ _STEP = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p, ctypes.c_double, ctypes.
                          ctypes.c_int)
 _ARRAY = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_size_t,
                           ctypes.c_void_p)  # fmi2Get/SetReal/Integer with raw buffer addresses
+_DERIVATIVES = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_size_t,
+                                ctypes.c_void_p, ctypes.c_void_p)  # fmi2SetRealInputDerivatives
 WARNING = 1  # fmi2Warning: the worst status that is not a failure
 
 
@@ -318,11 +320,16 @@ class FastIo:
         self._get_real, self._get_int, self._set_real = (
             _ARRAY(ctypes.cast(getattr(dll, f), ctypes.c_void_p).value)
             for f in ("fmi2GetReal", "fmi2GetInteger", "fmi2SetReal"))
+        self._set_derivatives = _DERIVATIVES(
+            ctypes.cast(dll.fmi2SetRealInputDerivatives, ctypes.c_void_p).value)
         self.n_real, self.n_int = len(reals), len(ints)
         self._vr_real = self._refs(reals)
         self._vr_int = self._refs(ints)
         self._vr_in = self._refs(inputs)
         self._in = (ctypes.c_double * max(1, len(inputs)))()
+        self._der = (ctypes.c_double * max(1, len(inputs)))()
+        self._order = (ctypes.c_int * max(1, len(inputs)))(*[1] * max(1, len(inputs)))
+        self._out = (ctypes.c_double * max(1, self.n_real))()
 
     def _refs(self, names):
         refs = [self.inst.ref(n) for n in names]
@@ -339,10 +346,26 @@ class FastIo:
         self._check(self._set_real(self.component, self._vr_in, len(values), self._in),
                     "fmi2SetReal", before)
 
+    def set_derivatives(self, values):
+        """fmi2SetRealInputDerivatives (first order) of the inputs, in the order given at
+        construction."""
+        before = self.inst._n_logged
+        self._der[:len(values)] = values
+        self._check(self._set_derivatives(self.component, self._vr_in, len(values),
+                                          self._order, self._der),
+                    "fmi2SetRealInputDerivatives", before)
+
     def step(self, t, h):
         before = self.inst._n_logged
         self._check(self._do_step(self.component, t, h, 1), "fmi2DoStep", before)
         self.inst.t = t + h
+
+    def reals(self):
+        """The Real outputs given at construction, as a list."""
+        before = self.inst._n_logged
+        self._check(self._get_real(self.component, self._vr_real, self.n_real, self._out),
+                    "fmi2GetReal", before)
+        return self._out[:self.n_real]
 
     def read(self, real_address, int_address):
         """The outputs to memory: n_real float64 at real_address, n_int int32 at int_address

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from hypoid import cli
+from hypoid.cosim import master as cosim_master
 from hypoid.drivecycle import cycles, levels, summary
 from hypoid.drivecycle import run as runner
 from hypoid.fmu.instance import TABLE, Instance
@@ -212,8 +213,9 @@ LIBCOSIM_TOL = 1e-3  # relative, axle energy loss: the masters differ only in ro
 
 def test_libcosim_and_fmpy_masters_agree_on_the_axle_loss(tmp_path, capsys):
     """The first 30 s of WLTC class 3 (standing, launch, first peak) from a cold start:
-    `hypoid drive-cycle --master libcosim` against the same scene in fmpy's master; both are
-    Jacobi with the same inputs, so the axle's energy loss, each part and the oil agree."""
+    `hypoid drive-cycle --master libcosim` against the same scene in fmpy's master with the
+    inputs held over each step as libcosim holds them (ramp=False); both are Jacobi with the
+    same inputs, so the axle's energy loss, each part and the oil agree."""
     from hypoid.cosim import libcosim
 
     why = libcosim.why_unavailable()
@@ -228,7 +230,7 @@ def test_libcosim_and_fmpy_masters_agree_on_the_axle_loss(tmp_path, capsys):
     cycle = cycles.builtin_cycle("wltc3")
     run = runner.simulate(cycle, ROOT / "build" / "HypoidGearPair.fmu",
                               VEHICLE_FMU, "fast", 293.15, 293.15, 0.05, {},
-                              "cold", until=30.0)
+                              "cold", until=30.0, ramp=False)
     ref = summary.summarise(run, cycle, 0.05)
     assert run.rows["time"][-1] == pytest.approx(30.0)
     assert ref["axle_loss_J"] > 1e3  # the launch is in the segment
@@ -371,3 +373,17 @@ def test_the_default_level_gives_the_full_levels_axle_loss():
     their loss grows with the mesh load, which the full level's compliant mesh makes oscillate
     about the rigid mesh's)."""
     check_axle_loss(first_100_s("map"), first_100_s("full"), 0.01, 0.03, 0.005)
+
+
+def test_ramps_end_where_the_fmu_extrapolates_them_and_within_range():
+    """The fmpy master's ramps (hypoid.cosim.master.ramp_slope): the end a + slope h, formed in
+    floating point as the FMU forms it, is the next step's start; it stays within the input's
+    range even where (b - a) / h * h rounds past b (the car coming to rest: v_air -> 0)."""
+    h = 0.05
+    assert 12.983012037151601 + (0.0 - 12.983012037151601) / h * h < 0.0  # rounds past 0
+    for a, b in [(12.983012037151601, 0.0), (28.574021648048085, 0.0), (0.5, 0.0),
+                 (0.0, 0.3), (99.9, 100.0)]:
+        s = cosim_master.ramp_slope(a, b, h, 0.0, 100.0)
+        assert 0.0 <= a + s * h <= 100.0
+        assert a + s * h == pytest.approx(b, abs=1e-13)
+    assert cosim_master.ramp_slope(7.1, 7.1, h) == 0.0
