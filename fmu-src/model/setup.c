@@ -214,6 +214,12 @@ static void ehl_params(hg_setup *s, const hg_vars *v)
         e->Lambda_cap = 0.0;
     }
     e->thermal = v->friction_model == HG_FRICTION_MODEL_EHL_THERMAL;
+    e->z_table = NULL;
+    if (e->roelands_Z == HG_Z_EXACT && (e->thermal || v->friction_model ==
+                                         HG_FRICTION_MODEL_EHL_ISOTHERMAL)) {
+        hg_z_table_build(&s->z_table, &s->lub);
+        e->z_table = &s->z_table;
+    }
     s->p.friction.lub = &s->lub;
 }
 

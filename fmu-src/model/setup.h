@@ -14,6 +14,7 @@ typedef struct {
     hg_gearset gear;
     hg_phase_tables phase; /* gear's series tabulated, per flank and torque level */
     hg_lubricant lub;
+    hg_z_table z_table;   /* the lubricant's Z_exact over T (roelands_z = exact, EHL friction) */
     hg_effmap map;        /* friction_model = map only */
     hg_heat_memo heat;    /* the housing heat's cache */
     hg_dyn_params p;      /* points into gear, lub, map and heat */

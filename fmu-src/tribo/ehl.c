@@ -137,7 +137,7 @@ static void stage_hertz(ehl_eval *e)
 static void stage_film(ehl_eval *e)
 {
     hg_rheo_state in;
-    hg_rheology_init(&e->sc.rh, e->lub, e->p->roelands_Z == HG_Z_EXACT);
+    hg_rheology_init(&e->sc.rh, e->lub, e->p->roelands_Z == HG_Z_EXACT, e->p->z_table);
     hg_rheology_at(&e->sc.rh, e->st.T_in, &in);
     e->st.eta0_in = exp(in.ln_eta0);
     e->st.alpha_in = in.alpha;

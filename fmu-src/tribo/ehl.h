@@ -11,6 +11,7 @@
 
 #include "tribo/contact.h"
 #include "tribo/lubricant.h"
+#include "tribo/rheology.h"
 #include "tribo/pair_contact.h"
 
 typedef enum { HG_Z_SIMPLE = 0, HG_Z_EXACT = 1 } hg_roelands_z_mode;
@@ -45,6 +46,8 @@ typedef struct {
     double T_c_tol;         /* convergence of T_c [K] (1e-6) */
     int hertz;              /* hg_hertz_mode (HG_HERTZ_EXACT) */
     int roelands_Z;         /* hg_roelands_z_mode (HG_Z_SIMPLE) */
+    const hg_z_table *z_table; /* the lubricant's Z_exact over T (hg_z_table_build) for
+                                  HG_Z_EXACT, or NULL: Z_exact solved at each temperature */
     int shear_pressure;     /* hg_shear_pressure (HG_SHEAR_P_MEAN) */
     int relaxation;         /* hg_relaxation (HG_RELAX_CONSTANT) */
     int thermal;            /* 1: solve T_c (default); 0: isothermal, shear at T_in */

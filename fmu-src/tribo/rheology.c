@@ -139,13 +139,76 @@ double hg_roelands_Z_exact(double alpha_star, double A, double Z_guess, double *
     return exp(-u);
 }
 
-void hg_rheology_init(hg_rheology *r, const hg_lubricant *lub, int z_exact)
+void hg_rheology_init(hg_rheology *r, const hg_lubricant *lub, int z_exact,
+                      const hg_z_table *z_table)
 {
     r->lub = lub;
     alpha_interp_init(lub, &r->ai);
     r->ln_a = log(lub->vogel_a);
     r->z_exact = z_exact;
+    r->z_table = z_exact ? z_table : NULL;
     r->T_last = r->Z_last = r->dZdT_last = 0.0;
+}
+
+/* Z_exact and dZ/dT at the state s (its temperature s->T_r), warm-started from guess (<= 0:
+ * none); whether (alpha*, A) lie in Z_exact's validated domain. */
+static int z_exact_at(const hg_rheo_state *s, double guess, double *Z, double *dZ)
+{
+    double dZ_dA, dZ_dlna, sp = s->alpha * HG_ROELANDS_P0;
+    *Z = hg_roelands_Z_exact(s->alpha, s->A, guess, &dZ_dA, &dZ_dlna);
+    *dZ = dZ_dA * s->dA + dZ_dlna * s->dlnalpha;
+    if (!isfinite(*dZ)) *dZ = 0.0;
+    return sp > 0.0 && !(sp < HG_Z_EXACT_S_MIN) && !(s->A > HG_Z_EXACT_A_MAX);
+}
+
+void hg_z_table_build(hg_z_table *t, const hg_lubricant *lub)
+{
+    hg_rheology r;
+    double T_lo = lub->vogel_c + HG_VOGEL_DT_MIN, guess = 0.0;
+    double ends[4];
+    int seg, k, n = 0;
+    hg_rheology_init(&r, lub, 1, NULL);
+    ends[0] = T_lo, ends[1] = lub->alpha_T[0], ends[2] = lub->alpha_T[2], ends[3] = HG_RHEO_T_MAX;
+    if (ends[1] < ends[0]) ends[1] = ends[0]; /* a data point below the clamp (not loadable) */
+    if (ends[2] > ends[3]) ends[2] = ends[3];
+    for (seg = 0; seg < 3; seg++) {
+        double span = ends[seg + 1] - ends[seg];
+        int cells = (int)ceil(span / HG_ZTAB_DT - 1e-9);
+        if (cells < 1) cells = 1;
+        t->T_node[seg] = ends[seg];
+        t->dT[seg] = span / cells;
+        t->first[seg] = n;
+        for (k = seg == 0 ? 0 : 1; k <= cells && n < HG_ZTAB_MAX; k++, n++) {
+            hg_rheo_state st;
+            double T = k == cells ? ends[seg + 1] : ends[seg] + k * t->dT[seg];
+            if (n == 0) T = nextafter(T, HUGE_VAL); /* the clamp itself has no derivatives */
+            hg_rheology_at(&r, T, &st);
+            t->exact[n] = (unsigned char)z_exact_at(&st, guess, &t->Z[n], &t->dZ[n]);
+            guess = t->Z[n];
+        }
+        if (seg > 0) t->first[seg]--; /* a segment starts on the last node of the one before */
+    }
+    t->first[3] = n < HG_ZTAB_MAX ? n : 0; /* too many nodes (no oil): solve every T instead */
+}
+
+/* Z and dZ/dT at the clamped temperature T from the table; 0 when the cell is not tabulated
+ * (a node outside Z_exact's domain, or T beyond the nodes). Cubic Hermite on the cell. */
+static int z_from_table(const hg_z_table *t, double T, double *Z, double *dZ)
+{
+    int seg = T < t->T_node[1] ? 0 : T < t->T_node[2] ? 1 : 2, i;
+    double x = (T - t->T_node[seg]) / t->dT[seg], h = t->dT[seg], u, u2, u3;
+    i = (int)x;
+    if (!(x >= 0.0)) return 0;
+    if (t->first[seg] + i + 1 >= t->first[seg + 1] + (seg == 2 ? 0 : 1)) i--; /* the end node */
+    i += t->first[seg];
+    if (i < 0 || i + 1 >= t->first[3] || !t->exact[i] || !t->exact[i + 1]) return 0;
+    u = x - (double)(i - t->first[seg]);
+    u2 = u * u, u3 = u2 * u;
+    *Z = (2.0 * u3 - 3.0 * u2 + 1.0) * t->Z[i] + (u3 - 2.0 * u2 + u) * h * t->dZ[i] +
+         (-2.0 * u3 + 3.0 * u2) * t->Z[i + 1] + (u3 - u2) * h * t->dZ[i + 1];
+    *dZ = ((6.0 * u2 - 6.0 * u) * (t->Z[i] - t->Z[i + 1]) / h +
+           (3.0 * u2 - 4.0 * u + 1.0) * t->dZ[i] + (3.0 * u2 - 2.0 * u) * t->dZ[i + 1]);
+    return 1;
 }
 
 void hg_rheology_at(const hg_rheology *r, double T, hg_rheo_state *s)
@@ -166,7 +229,10 @@ void hg_rheology_at(const hg_rheology *r, double T, hg_rheo_state *s)
  * derivatives (implicit differentiation in hg_roelands_Z_exact) */
 void hg_rheology_Z(hg_rheology *r, double T, hg_rheo_state *s)
 {
-    if (r->z_exact) {
+    if (r->z_table && z_from_table(r->z_table, s->T_r, &s->Z, &s->dZ)) {
+        /* a clamped T (hg_rheology_at): Z is that of the clamp's temperature, constant beyond */
+        if (!(T - r->lub->vogel_c > HG_VOGEL_DT_MIN) || T > HG_RHEO_T_MAX) s->dZ = 0.0;
+    } else if (r->z_exact) {
         double dZ_dA, dZ_dlna, guess = 0.0;
         if (r->Z_last > 0.0) guess = r->Z_last + r->dZdT_last * (T - r->T_last);
         s->Z = hg_roelands_Z_exact(s->alpha, s->A, guess > 0.0 ? guess : r->Z_last, &dZ_dA,

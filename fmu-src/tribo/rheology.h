@@ -33,6 +33,24 @@ typedef struct {
     double s0, s2;     /* d ln alpha* / dT of the quadratic at T0 and T2 [1/K] */
 } hg_alpha_interp;
 
+/* Z_exact of one lubricant over the temperatures the rheology is evaluated at
+ * ([c + HG_VOGEL_DT_MIN, HG_RHEO_T_MAX]), tabulated: cubic Hermite between nodes at most
+ * HG_ZTAB_DT apart, from Z_exact and its exact temperature derivative at each node. The nodes
+ * include the alpha* data temperatures alpha_T[0] and alpha_T[2], where alpha*(T) joins its
+ * quadratic and log-linear pieces (its curvature jumps there), so Z(T) is smooth within every
+ * cell; interpolated, it stays within 2e-11 of Z_exact (tests/c/test_ehl_properties.c). Cells
+ * with a node outside Z_exact's validated domain (where it falls back to Z_simple) are solved
+ * directly. Read-only once built: one table serves every evaluation of the lubricant. */
+#define HG_ZTAB_DT 0.5 /* [K] */
+#define HG_ZTAB_MAX 2400
+typedef struct {
+    double T_node[3]; /* starts of the three uniform segments: T_lo, alpha_T[0], alpha_T[2] */
+    double dT[3];     /* their node spacings [K] */
+    int first[4];     /* index of each segment's first node; first[3] = number of nodes */
+    double Z[HG_ZTAB_MAX], dZ[HG_ZTAB_MAX]; /* Z_exact and dZ/dT [1/K] at the nodes */
+    unsigned char exact[HG_ZTAB_MAX];        /* the node lies in Z_exact's validated domain */
+} hg_z_table;
+
 /* The rheology of one lubricant, evaluated temperature by temperature (docs/physics.md §4): build it once
  * per call of the friction model with hg_rheology_init. It carries the warm start of Z_exact
  * between temperatures, so it is the caller's scratch, not shared data. */
@@ -41,6 +59,7 @@ typedef struct {
     hg_alpha_interp ai; /* alpha*(T) coefficients */
     double ln_a;        /* ln of Vogel a */
     int z_exact;        /* Z from Blok's alpha* exactly (1) or Z_simple (0) */
+    const hg_z_table *z_table; /* Z_exact tabulated (z_exact), or NULL: solved at each T */
     double T_last, Z_last, dZdT_last; /* previous Z_exact (warm start) */
 } hg_rheology;
 
@@ -56,7 +75,12 @@ typedef struct {
     double dL0, dA, dlnalpha, dZ; /* d/dT of ln eta_0, A, ln alpha*, Z */
 } hg_rheo_state;
 
-void hg_rheology_init(hg_rheology *r, const hg_lubricant *lub, int z_exact);
+/* z_table: the lubricant's Z_exact table (hg_z_table_build) when z_exact, or NULL. */
+void hg_rheology_init(hg_rheology *r, const hg_lubricant *lub, int z_exact,
+                      const hg_z_table *z_table);
+
+/* Fills t for lub (about a thousand Z_exact solves, each warm-started from the node before). */
+void hg_z_table_build(hg_z_table *t, const hg_lubricant *lub);
 
 /* ln eta_0, A and alpha* at T (everything but Z). */
 void hg_rheology_at(const hg_rheology *r, double T, hg_rheo_state *s);

@@ -69,7 +69,7 @@ static hg_rheo_state rheo(const hg_lubricant *l, double T, int z_exact)
 {
     hg_rheology r;
     hg_rheo_state s;
-    hg_rheology_init(&r, l, z_exact);
+    hg_rheology_init(&r, l, z_exact, NULL);
     hg_rheology_at(&r, T, &s);
     hg_rheology_Z(&r, T, &s);
     return s;
@@ -195,6 +195,40 @@ int main(void)
             worst = fmax(worst, fabs(z[0] - 2.0 * z[1] + z[2]) / (h * h));
         }
         CHECK(worst < 1e-4); /* |Z''| ~ 1e-5 1/K^2; rounding noise would give ~1e-11/h^2 = 4e-9 */
+    }
+    /* Z_exact tabulated over T (hg_z_table, the FMU's): within 1e-10 of the solve and its
+     * derivative within 1e-7 of the solve's over the rheology's whole range, at every node, in
+     * every cell and across the joins of alpha*(T)'s pieces; beyond the range, the clamp's value */
+    for (j = 0; j < 2; j++) {
+        static hg_z_table zt;
+        double worst = 0.0, worst_d = 0.0, T_lo = lubs[j].vogel_c + HG_VOGEL_DT_MIN;
+        hg_z_table_build(&zt, &lubs[j]);
+        CHECK(zt.first[3] > 400 && zt.first[3] < HG_ZTAB_MAX);
+        for (T = T_lo; T <= HG_RHEO_T_MAX; T += 0.0937) {
+            hg_rheology r, rt;
+            hg_rheo_state s1, s2;
+            hg_rheology_init(&r, &lubs[j], 1, NULL);
+            hg_rheology_init(&rt, &lubs[j], 1, &zt);
+            hg_rheology_at(&r, T, &s1);
+            hg_rheology_Z(&r, T, &s1);
+            hg_rheology_at(&rt, T, &s2);
+            hg_rheology_Z(&rt, T, &s2);
+            worst = fmax(worst, fabs(s2.Z / s1.Z - 1.0));
+            worst_d = fmax(worst_d, fabs(s2.dZ - s1.dZ) / fabs(s1.Z));
+        }
+        printf("Z_exact table vs solve, %s: worst %.1e (Z), %.1e (dZ/dT relative to Z, 1/K)\n",
+               lubs[j].name, worst, worst_d);
+        CHECK(worst < 1e-10 && worst_d < 1e-7);
+        {
+            hg_rheology rt;
+            hg_rheo_state s1, s2;
+            hg_rheology_init(&rt, &lubs[j], 1, &zt);
+            hg_rheology_at(&rt, HG_RHEO_T_MAX + 50.0, &s1);
+            hg_rheology_Z(&rt, HG_RHEO_T_MAX + 50.0, &s1);
+            hg_rheology_at(&rt, HG_RHEO_T_MAX, &s2);
+            hg_rheology_Z(&rt, HG_RHEO_T_MAX, &s2);
+            CHECK(s1.Z == s2.Z && s1.dZ == 0.0);
+        }
     }
     /* docs/physics.md §4.3 scale: 80 degC, Z_simple, eta(0.5/1.0/1.5 GPa) = 1.5/22/185 Pa s */
     {

@@ -114,7 +114,7 @@ int main(int argc, char **argv)
         {
             hg_rheology rh;
             hg_rheo_state s60, s100;
-            hg_rheology_init(&rh, &l, 0);
+            hg_rheology_init(&rh, &l, 0, NULL);
             hg_rheology_at(&rh, 60 + 273.15, &s60);
             hg_rheology_at(&rh, 100 + 273.15, &s100);
             CHECK_CLOSE(exp(s60.ln_eta0), 38.8e-3, 0.002, 0);
