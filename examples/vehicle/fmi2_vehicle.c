@@ -253,12 +253,13 @@ fmi2Status fmi2SetReal(fmi2Component comp, const fmi2ValueReference vr[], size_t
     if (!allowed(c, "fmi2SetReal", ST_INSTANTIATED | ST_INIT | ST_STEP_COMPLETE)) return fmi2Error;
     if (!check_refs(c, "fmi2SetReal", vr, n, value)) return fmi2Error;
     for (i = 0; i < n; i++) {
-        if (vr[i] >= VM_FIRST_OUTPUT) {
+        if (!vm_settable((int)vr[i])) {
             logf_(c, fmi2Error, CAT_ERROR, "fmi2SetReal: value reference %u is an output",
                   (unsigned)vr[i]);
             return fmi2Error;
         }
-        if (vr[i] >= VM_FIRST_PARAMETER && c->state == ST_STEP_COMPLETE) {
+        if (vr[i] >= VM_FIRST_PARAMETER && vr[i] < VM_FIRST_OUTPUT &&
+            c->state == ST_STEP_COMPLETE) {
             logf_(c, fmi2Error, CAT_ERROR, "fmi2SetReal: parameter %u is fixed after "
                   "initialization", (unsigned)vr[i]);
             return fmi2Error;

@@ -23,7 +23,10 @@ static const double start_values[VM_NUM_VARS] = {
     [VR_T_HS0] = 0.0,    /* N.m, half-shaft torque (twist) at the start */
     [VR_H_MAX] = 1e-4,   /* s, largest internal RK4 step */
     [VR_COUPLING] = VM_HALF_SHAFT,
+    [VR_T_WHEEL] = 0.0,  /* N.m, torque the driveline delivers to the wheels (coupling 3) */
 };
+
+int vm_settable(int vr) { return vr < VM_FIRST_OUTPUT || vr == VR_T_WHEEL; }
 
 void vm_reset(vm_model *m, double t0)
 {
@@ -36,8 +39,8 @@ const char *vm_check_parameters(const vm_model *m)
 {
     const double *v = m->v;
     int k;
-    for (k = 0; k < VM_FIRST_OUTPUT; k++)
-        if (!isfinite(v[k])) return "a parameter or input is not finite";
+    for (k = 0; k < VM_NUM_VARS; k++)
+        if (vm_settable(k) && !isfinite(v[k])) return "a parameter or input is not finite";
     if (!(v[VR_M] > 0.0)) return "m must be > 0";
     if (!(v[VR_R_DYN] > 0.0)) return "r_dyn must be > 0";
     if (!(v[VR_J_WHEELS] >= 0.0)) return "J_wheels must be >= 0";
@@ -50,8 +53,9 @@ const char *vm_check_parameters(const vm_model *m)
     if (!(v[VR_C_HS] >= 0.0)) return "c_hs must be >= 0";
     if (!(v[VR_V_EPS] > 0.0)) return "v_eps must be > 0";
     if (!(v[VR_H_MAX] > 0.0)) return "h_max must be > 0";
-    if (v[VR_COUPLING] != VM_HALF_SHAFT && v[VR_COUPLING] != VM_ROAD_LOAD)
-        return "coupling must be 1 (half-shaft) or 2 (road load)";
+    if (v[VR_COUPLING] != VM_HALF_SHAFT && v[VR_COUPLING] != VM_ROAD_LOAD &&
+        v[VR_COUPLING] != VM_WHEEL_TORQUE)
+        return "coupling must be 1 (half-shaft), 2 (road load) or 3 (wheel torque)";
     if (!(v[VR_T_BRAKE] >= 0.0)) return "T_brake must be >= 0";
     return NULL;
 }
@@ -59,7 +63,8 @@ const char *vm_check_parameters(const vm_model *m)
 void vm_initial_state(vm_model *m)
 {
     memset(m->s, 0, sizeof m->s);
-    if (m->v[VR_K_HS] > 0.0) m->s[S_TWIST] = m->v[VR_T_HS0] / m->v[VR_K_HS];
+    if (m->v[VR_K_HS] > 0.0 && m->v[VR_COUPLING] != VM_WHEEL_TORQUE) /* else not its shaft */
+        m->s[S_TWIST] = m->v[VR_T_HS0] / m->v[VR_K_HS];
     if (m->v[VR_R_DYN] > 0.0) m->s[S_W_WHEEL] = m->v[VR_V0] / m->v[VR_R_DYN];
     m->w_w_prev = m->v[VR_W_W];
     if (m->v[VR_COUPLING] == VM_ROAD_LOAD) m->v[VR_A] = 0.0;
@@ -82,6 +87,14 @@ static double inertia(const double *p)
 
 static int road_load_coupling(const double *p) { return p[VR_COUPLING] == VM_ROAD_LOAD; }
 
+static int wheel_torque_coupling(const double *p) { return p[VR_COUPLING] == VM_WHEEL_TORQUE; }
+
+/* the speed at which the input power enters: the flange's (input w_w) or the wheels' */
+static double input_speed(const double *p, const double *s)
+{
+    return wheel_torque_coupling(p) ? s[S_W_WHEEL] : p[VR_W_W];
+}
+
 /* the wheel speed: a state (half-shaft) or the input (road load) */
 static double wheel_speed(const double *p, const double *s)
 {
@@ -94,10 +107,11 @@ static double brake_torque(const double *p, double v)
     return p[VR_T_BRAKE] * tanh(v / p[VR_V_EPS]);
 }
 
-/* the output torque at the flange: half-shaft torque or road load */
+/* the torque exchanged: half-shaft torque, road load, or the input wheel torque */
 static double flange_torque(const double *p, const double *s)
 {
     double v = p[VR_R_DYN] * wheel_speed(p, s), f_resist, f_grade;
+    if (wheel_torque_coupling(p)) return p[VR_T_WHEEL];
     if (!road_load_coupling(p))
         return p[VR_K_HS] * s[S_TWIST] + p[VR_C_HS] * (p[VR_W_W] - s[S_W_WHEEL]);
     road_load(p, v, &f_resist, &f_grade);
@@ -106,14 +120,15 @@ static double flange_torque(const double *p, const double *s)
 
 static void rhs(const double *p, const double *s, double *ds)
 {
-    double w = wheel_speed(p, s), slip = p[VR_W_W] - w, own = !road_load_coupling(p);
+    double w = wheel_speed(p, s), own = !road_load_coupling(p);
+    double slip = wheel_torque_coupling(p) ? 0.0 : p[VR_W_W] - w; /* across the half-shaft */
     double t_hs = flange_torque(p, s), v = p[VR_R_DYN] * w, f_resist, f_grade;
     double t_b = brake_torque(p, v);
     road_load(p, v, &f_resist, &f_grade);
     ds[S_TWIST] = own * slip;
     ds[S_W_WHEEL] = own * (t_hs - p[VR_R_DYN] * (f_resist + f_grade) - t_b) / inertia(p);
     ds[S_X] = v;
-    ds[S_E_IN] = t_hs * p[VR_W_W];
+    ds[S_E_IN] = t_hs * input_speed(p, s);
     ds[S_E_ROAD] = f_resist * v;
     ds[S_E_DAMPER] = own * p[VR_C_HS] * slip * slip;
     ds[S_E_BRAKE] = t_b * w;
@@ -164,7 +179,7 @@ void vm_outputs(vm_model *m)
     v[VR_X] = s[S_X];
     v[VR_TWIST] = s[S_TWIST];
     v[VR_F_ROAD] = f_resist + f_grade;
-    v[VR_P_IN] = v[VR_T_HS] * v[VR_W_W];
+    v[VR_P_IN] = v[VR_T_HS] * input_speed(v, s);
     v[VR_E_IN] = s[S_E_IN];
     v[VR_E_KIN] = own_inertia ? 0.5 * inertia(v) * w * w : 0.0;
     v[VR_E_SPRING] = 0.5 * v[VR_K_HS] * s[S_TWIST] * s[S_TWIST];

@@ -11,7 +11,13 @@
  *    model (the gear FMU's I_w and k_t2), the input is the wheel speed and the output the load
  *    torque at the wheel, T_hs = r_dyn (F_roll + F_aero + F_grade) + T_b. Nothing stiff crosses
  *    the coupling, so a host can take long communication steps (a drive cycle).
- * In both
+ * 3, wheel torque: the half-shaft lives in the driveline model (the gear FMU's load_mode =
+ *    half_shaft), the input T_wheel is the torque it delivers to the wheels and the output the
+ *    wheel speed w_wheel, a state of the vehicle's large inertia:
+ *      J_v w_wheel' = T_wheel - r_dyn (F_roll + F_aero + F_grade) - T_b
+ *    The variable that crosses at the stiff side is the slow wheel speed, so a host holding its
+ *    inputs over 10 ms steps stays stable (docs/integration.md).
+ * In all
  *   F_roll = c_rr m g cos(grade) tanh(v / v_eps),  F_aero = rho/2 CdA v |v|,
  *   F_grade = m g sin(grade),  T_b = T_brake tanh(v / v_eps),  v = r_dyn w_wheel
  * with the energy integrals as extra states, so that
@@ -31,6 +37,8 @@ enum {
     /* outputs */
     VR_T_HS, VR_V, VR_W_WHEEL, VR_A, VR_X, VR_TWIST, VR_F_ROAD, VR_P_IN, VR_E_IN, VR_E_KIN,
     VR_E_SPRING, VR_E_ROAD, VR_E_GRADE, VR_E_DAMPER, VR_E_BRAKE,
+    /* input of coupling 3, after the others so that their value references stay */
+    VR_T_WHEEL,
     VM_NUM_VARS
 };
 #define VM_FIRST_PARAMETER VR_M
@@ -39,7 +47,11 @@ enum {
 /* States of the integrator. */
 enum { S_TWIST, S_W_WHEEL, S_X, S_E_IN, S_E_ROAD, S_E_DAMPER, S_E_BRAKE, VM_NUM_STATES };
 
-enum { VM_HALF_SHAFT = 1, VM_ROAD_LOAD = 2 }; /* values of the parameter coupling */
+/* values of the parameter coupling */
+enum { VM_HALF_SHAFT = 1, VM_ROAD_LOAD = 2, VM_WHEEL_TORQUE = 3 };
+
+/* 1 when value reference vr is an input or a parameter (settable), 0 for an output */
+int vm_settable(int vr);
 
 typedef struct {
     double v[VM_NUM_VARS];      /* every variable, by value reference */

@@ -65,6 +65,7 @@ struct hg_instance {
     hg_inputs input_der;     /* first derivatives for the next step */
     hg_model *model;
     int set_up; /* the model is set up for the current parameters and initial inputs */
+    int step_warned; /* a step longer than the coupling holds has been reported */
 };
 
 /* Logs to the host when the category is on. status: the status the message accompanies. */

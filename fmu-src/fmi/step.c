@@ -68,6 +68,18 @@ static hg_status step_failed(hg_instance *c, const char *fn, const char *why)
     return HG_ERROR;
 }
 
+/* A step longer than the load mode's coupling holds: a warning naming both, once per instance. */
+static void warn_long_step(hg_instance *c, const char *fn, double h)
+{
+    double limit = hg_model_comm_step_limit(c->model);
+    if (c->step_warned || !(limit > 0.0) || h <= limit) return;
+    c->step_warned = 1;
+    hg_log(c, HG_WARNING, CAT_WARNING, "%s: communication step %g s is longer than %g s, the "
+           "longest the half-shaft coupling is measured to hold with k_hs = %g N.m/rad (two fifths "
+           "of the half-shaft mode's period; docs/integration.md); shorter steps keep its error "
+           "bounded", fn, h, limit, c->vars.k_hs);
+}
+
 /* The outputs are computed when read (hg_instance_outputs), not after every step. */
 hg_status hg_do_step(hg_instance *c, const char *fn, double t, double h)
 {
@@ -76,6 +88,7 @@ hg_status hg_do_step(hg_instance *c, const char *fn, double t, double h)
     if (!c->set_up || !c->model) return hg_fail(c, fn, "the model is not set up");
     if (check_step(c, fn, t, h)) return HG_ERROR;
     hg_log(c, HG_OK, CAT_ALL, "%s: t = %.9g s, h = %g s", fn, t, h);
+    warn_long_step(c, fn, h);
     if (h > 0.0 && hg_model_step(c->model, &c->vars, &c->input_der, h, err, sizeof err))
         return step_failed(c, fn, err);
     memset(&c->input_der, 0, sizeof c->input_der); /* derivatives apply to one step */

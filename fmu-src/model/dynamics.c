@@ -341,6 +341,20 @@ double hg_dyn_oil_temperature(const hg_dyn_params *p, const hg_inputs *u, const 
     return p->ledger.sump ? y[HG_Y_T_OIL] : u->T_bath;
 }
 
+/* The torque resisting at the wheel end: the input T_w, the governor's, or the half-shaft's
+ * spring-damper to the wheel turning at the input w_wheel, T_hs = k_hs twist + c_hs slip. */
+static double wheel_end_torque(const hg_dyn_params *p, const hg_inputs *u, const double *y,
+                               double *slip)
+{
+    *slip = 0.0;
+    if (p->speed_governor)
+        return u->T_s * p->ratio + p->K_p * (y[HG_Y_W_W] - u->w_set / p->ratio) +
+               p->K_i * y[HG_Y_GOV];
+    if (!p->half_shaft) return u->T_w;
+    *slip = y[HG_Y_W_W] - u->w_wheel;
+    return p->k_hs * y[HG_Y_TWIST_HS] + p->c_hs * *slip;
+}
+
 void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const double *y,
                      int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
@@ -350,11 +364,7 @@ void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const
     d1 = ev->w_s - y[HG_Y_W_P];
     ev->T_oil = hg_dyn_oil_temperature(p, u, y);
     mesh_state(p, mode, y, ev);
-    if (p->speed_governor)
-        ev->T_w = u->T_s * p->ratio + p->K_p * (y[HG_Y_W_W] - u->w_set / p->ratio) +
-                  p->K_i * y[HG_Y_GOV];
-    else
-        ev->T_w = u->T_w;
+    ev->T_w = wheel_end_torque(p, u, y, &ev->slip_hs);
     if (p->mesh == HG_MESH_MODEL_RIGID) {
         rigid_mesh(p, u, y, all_pairs, T_c_warm, ev);
     } else {
@@ -364,7 +374,8 @@ void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const
     }
     efficiency(u, y, ev);
     ev->Q_dot = housing_heat(p, ev->T_oil, u->T_amb, u->v_air);
-    ev->P_damp = p->c_t1 * d1 * d1 + p->c_t2 * d2 * d2 + p->c_m * ev->g * ev->xdot * ev->xdot;
+    ev->P_damp = p->c_t1 * d1 * d1 + p->c_t2 * d2 * d2 + p->c_m * ev->g * ev->xdot * ev->xdot +
+                 p->c_hs * ev->slip_hs * ev->slip_hs;
     if (p->mesh == HG_MESH_MODEL_VARYING) {
         double N_p_w = p->gear->N_p * y[HG_Y_W_P];
         ev->T_km_dot = torque_filter_rate(p, y, ev);
@@ -398,7 +409,10 @@ void hg_dyn_derivatives(const hg_dyn_params *p, const hg_inputs *u, const double
     ydot[HG_Y_W_W] = (T_2 - ev->T_w) / p->I_w;                                     /* eq. 23 */
     ydot[HG_Y_GOV] = p->speed_governor ? y[HG_Y_W_W] - u->w_set / p->ratio : 0.0;
     ydot[HG_Y_E_IN] = u->T_s * ev->w_s;
-    ydot[HG_Y_E_OUT] = ev->T_w * y[HG_Y_W_W];
+    ydot[HG_Y_TWIST_HS] = ev->slip_hs;
+    ydot[HG_Y_IMP_W] = ev->T_w;
+    /* the work leaves at the wheel end, or at the wheel past the half-shaft */
+    ydot[HG_Y_E_OUT] = ev->T_w * (y[HG_Y_W_W] - ev->slip_hs);
     ydot[HG_Y_E_FRIC] = ev->P_loss;
     ydot[HG_Y_E_DAMP] = ev->P_damp;
     ydot[HG_Y_E_EXC] = ev->P_exc;
@@ -416,10 +430,10 @@ void hg_dyn_derivatives(const hg_dyn_params *p, const hg_inputs *u, const double
 double hg_dyn_stored_energy(const hg_dyn_params *p, const double *y, const hg_dyn_eval *ev)
 {
     double ws = hg_dyn_input_speed(p, y), wp = y[HG_Y_W_P], wg = y[HG_Y_W_G], ww = y[HG_Y_W_W];
-    double t1 = y[HG_Y_TWIST1], t2 = y[HG_Y_TWIST2];
+    double t1 = y[HG_Y_TWIST1], t2 = y[HG_Y_TWIST2], ths = y[HG_Y_TWIST_HS];
     double mesh = p->mesh == HG_MESH_MODEL_RIGID ? 0.0
                   : hg_dyn_loaded_law(p)           ? ev->U_mesh
                                                    : ev->mesh.k_m * ev->Phi;
     return 0.5 * (p->I_s * ws * ws + p->I_p * wp * wp + p->I_g * wg * wg + p->I_w * ww * ww) +
-           0.5 * (p->k_t1 * t1 * t1 + p->k_t2 * t2 * t2) + mesh;
+           0.5 * (p->k_t1 * t1 * t1 + p->k_t2 * t2 * t2 + p->k_hs * ths * ths) + mesh;
 }

@@ -30,6 +30,9 @@ enum {
     HG_Y_ETA_AXLE2, /* integral of eta_axle^2 dt [s] */
     HG_Y_T_KM,   /* transmitted pinion torque filtered over a few mesh cycles, at which the tooth
                     data are interpolated [N m] (docs/physics.md §10.8; constant for one level) */
+    HG_Y_TWIST_HS, /* half-shaft twist phi_w - phi_wheel [rad] (load_mode = half_shaft; else 0) */
+    HG_Y_IMP_W,  /* impulse of the wheel-end torque, integral of T_w dt [N m s] (output T_wheel;
+                    load_mode = half_shaft; else 0) */
     HG_NY
 };
 
@@ -59,6 +62,8 @@ typedef struct {
                                     on first use), or NULL: hg_friction_pair at every evaluation */
     const hg_effmap *map;        /* friction_model = map: efficiency of the rigid gear */
     int speed_governor;          /* load_mode = speed */
+    int half_shaft;              /* load_mode = half_shaft: T_w from the half-shaft to w_wheel */
+    double k_hs, c_hs;           /* half-shaft stiffness [N m/rad] and damping [N m s/rad] */
     double K_p, K_i;             /* governor gains [N m s/rad], [N m/rad] */
     hg_ledger ledger;            /* churning, bearings, seals and the sump (docs/axle.md) */
     hg_heat_memo *heat;          /* the instance's cache of the housing heat, or NULL */
@@ -74,10 +79,11 @@ typedef struct {
     double W_t;        /* net mesh force k_m f + c g xdot, positive pushing the drive flank [N] */
     double W_drive;    /* compressive load on the drive flank, max(k_m f_d + c g_d xdot, 0) [N] */
     double W_coast;    /* compressive load on the back flank, max(-(k_m f_b + c g_b xdot), 0) [N] */
-    double T_w;        /* wheel-end torque, input or governor [N m] */
+    double T_w;        /* wheel-end torque: input, governor or half-shaft [N m] */
     double T_1;        /* input shaft torque on the pinion [N m]: its spring's, or T_s - I_s acc
                           when the shaft is quasi-static */
     double w_s;        /* speed of the input shaft's end [rad/s] (hg_dyn_input_speed) */
+    double slip_hs;    /* w_w - w_wheel across the half-shaft [rad/s] (0 unless half_shaft) */
     double T_fp, T_fg; /* friction torques on pinion and gear [N m] */
     double acc_p;      /* pinion acceleration of the rigid mesh [rad/s^2] */
     double P_loss, P_in, eta;

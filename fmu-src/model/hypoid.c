@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "io/constants.h"
 #include "model/friction_table_policy.h"
 #include "model/outputs.h"
 #include "model/setup.h"
@@ -51,16 +52,39 @@ void hg_model_free(hg_model *m)
 
 double hg_model_time(const hg_model *m) { return m->rt.t; }
 
+#define HALF_SHAFT_STEP_PERIODS 0.4 /* of the half-shaft mode: the range the coupling matrix and
+                                       the one-step map cover (docs/integration.md) */
+
+double hg_model_comm_step_limit(const hg_model *m)
+{
+    const hg_dyn_params *p = &m->s.p;
+    double J = p->I_w + p->I_g + (p->I_s + p->I_p) * p->ratio * p->ratio; /* [kg m^2] */
+    if (!p->half_shaft || !(p->k_hs > 0.0)) return 0.0;
+    return HALF_SHAFT_STEP_PERIODS * HG_TWO_PI / sqrt(p->k_hs / J);
+}
+
 /* ------------------------------------------------------------------ the integrator */
 
-static int rhs(double t, const double *y, double *ydot, void *user)
+/* The integrator holds the first n_active states (the half-shaft's two only under load_mode =
+ * half_shaft); the model's arrays are HG_NY long, the others 0. */
+static int rhs(double t, const double *y_in, double *ydot_out, void *user)
 {
     hg_model *m = user;
     hg_inputs u;
     hg_dyn_eval ev;
+    int n = m->s.n_active;
+    double y_all[HG_NY], ydot_all[HG_NY];
+    const double *y = y_in;
+    double *ydot = n < HG_NY ? ydot_all : ydot_out;
+    if (n < HG_NY) {
+        memcpy(y_all, y_in, (size_t)n * sizeof *y_all);
+        memset(y_all + n, 0, (size_t)(HG_NY - n) * sizeof *y_all);
+        y = y_all;
+    }
     hg_stepping_inputs_at(&m->rt, t, &u);
     hg_dyn_evaluate(&m->s.p, &u, m->rt.mode, y, 0, m->rt.T_c_warm, &ev);
     hg_dyn_derivatives(&m->s.p, &u, y, &ev, ydot);
+    if (n < HG_NY) memcpy(ydot_out, ydot_all, (size_t)n * sizeof *ydot_out);
     return 0;
 }
 
@@ -85,7 +109,8 @@ static int make_solver(hg_model *m, char *err, size_t errlen)
     opt.atol = m->s.atol;
     opt.max_steps = MAX_SOLVER_STEPS;
     hg_solver_free(m->solver);
-    m->solver = hg_solver_new(HG_NY, HG_STEPPING_N_ROOTS, rhs, roots, m, &opt, err, errlen);
+    m->solver = hg_solver_new(m->s.n_active, HG_STEPPING_N_ROOTS, rhs, roots, m, &opt, err,
+                              errlen);
     return m->solver ? 0 : -1;
 }
 
@@ -166,11 +191,13 @@ static void rhs_now(hg_model *m, const hg_inputs *u, double *ydot)
 static void begin_inputs(hg_model *m, const hg_vars *v, const hg_inputs *du, double *h0)
 {
     hg_runtime *rt = &m->rt;
-    hg_inputs u;
+    hg_inputs u, du_in = *du;
     hg_input_change change;
     double f_old[HG_NY], f_new[HG_NY];
     int rebuild, keep;
     hg_vars_inputs(v, &u);
+    hg_stepping_wheel_input(rt, &m->s, &u, &du_in);
+    du = &du_in;
     change = hg_stepping_change(rt, &u, du);
     rebuild = hg_ftp_stale(m->tables, rt, &m->s.p, &u);
     keep = m->s.explicit_rk && !rt->restart && (change == HG_INPUTS_JUMP || rebuild);

@@ -41,6 +41,12 @@ void hg_model_outputs(hg_model *m, hg_vars *v, int set);
 
 double hg_model_time(const hg_model *m);
 
+/* The longest communication step the load mode's coupling is measured to hold [s], or 0 when it
+ * sets none (docs/integration.md): under load_mode = half_shaft two fifths of the period of the
+ * half-shaft mode against the held wheel, f_hs = sqrt(k_hs / J) / (2 pi) with J the gear's
+ * inertia at the wheel end. */
+double hg_model_comm_step_limit(const hg_model *m);
+
 /* State snapshots: copy out, and restore after hg_model_setup with the same parameters. Taking a
  * snapshot makes the next step restart the integrator, so that a restored run and the original
  * continue bit-identically. */

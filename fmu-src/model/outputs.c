@@ -50,6 +50,7 @@ static void write_motion(const hg_setup *s, const hg_runtime *rt, const hg_dyn_e
     v->T_fp = ev->T_fp;
     v->T_fg = ev->T_fg;
     v->T_w_out = ev->T_w;
+    v->T_wheel = s->p.half_shaft ? hg_stepping_wheel_torque(rt, ev->T_w) : ev->T_w;
     v->k_m = ev->mesh.k_m;
     v->contact = contact(&s->p, rt, ev);
     v->n_impacts = rt->n_impacts;

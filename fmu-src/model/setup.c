@@ -290,6 +290,9 @@ static void dynamics_params(hg_setup *s, const hg_vars *v)
     p->friction.model = v->friction_model;
     p->friction.mu_const = v->mu_const;
     p->speed_governor = v->load_mode == HG_LOAD_MODE_SPEED;
+    p->half_shaft = v->load_mode == HG_LOAD_MODE_HALF_SHAFT;
+    p->k_hs = p->half_shaft ? v->k_hs : 0.0; /* no spring energy unless it acts */
+    p->c_hs = p->half_shaft ? v->c_hs : 0.0;
     /* PI governor on the wheel speed, tuned on the rigid-body inertia seen at the wheel */
     J = (v->I_s + v->I_p) * p->ratio * p->ratio + v->I_g + v->I_w;
     w_n = HG_TWO_PI * v->governor_bandwidth;
@@ -315,7 +318,7 @@ static void tolerances(hg_setup *s, const hg_vars *v)
     double E = a * s->p.k_m0 * 1e-4; /* energy: a force of k_m * 0.1 mm through a */
     double *t = s->atol;
     t[HG_Y_TWIST1] = t[HG_Y_PHI_P] = a / R_p;
-    t[HG_Y_TWIST2] = t[HG_Y_GOV] = a / R_g;
+    t[HG_Y_TWIST2] = t[HG_Y_GOV] = t[HG_Y_TWIST_HS] = a / R_g;
     t[HG_Y_X] = a;
     t[HG_Y_W_S] = t[HG_Y_W_P] = a * w4 / R_p;
     t[HG_Y_W_G] = t[HG_Y_W_W] = a * w4 / R_g;
@@ -324,6 +327,8 @@ static void tolerances(hg_setup *s, const hg_vars *v)
     t[HG_Y_E_CHURN] = t[HG_Y_E_BEAR] = t[HG_Y_E_SEAL] = t[HG_Y_Q_H] = E;
     t[HG_Y_T_OIL] = 1e-6; /* K */
     t[HG_Y_T_KM] = 1e-3;  /* N m */
+    t[HG_Y_IMP_W] = 1e-6; /* N m s */
+    s->n_active = s->p.half_shaft ? HG_NY : HG_Y_TWIST_HS; /* the half-shaft's states last */
     s->rtol = v->rtol;
     s->solver = solver_in_force(v);
     s->fixed_step = s->solver == HG_SOLVER_NEWMARK;

@@ -21,6 +21,8 @@ typedef struct {
     int solver;           /* HG_SOLVER_* in force (auto resolved) */
     double atol[HG_NY];
     double rtol;
+    int n_active;         /* states the integrator holds: the half-shaft's two (the last) only
+                             under load_mode = half_shaft */
     double max_step;      /* user's max_step, 0 = automatic */
     int steps_per_mesh;   /* per mesh cycle: the fixed step (newmark) or the automatic max_step */
     int fixed_step;       /* the solver takes fixed steps (newmark) */

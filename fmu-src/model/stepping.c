@@ -33,6 +33,9 @@ static void set_springs(double *y, const hg_dyn_params *p, const hg_vars *v,
     if (p->speed_governor) {
         y[HG_Y_TWIST2] = T_2 / v->k_t2;
         y[HG_Y_GOV] = p->K_i > 0.0 ? (T_2 - v->T_s * p->ratio) / p->K_i : 0.0;
+    } else if (p->half_shaft) { /* the half-shaft carries it on: no input enters the start */
+        y[HG_Y_TWIST2] = T_2 / v->k_t2;
+        y[HG_Y_TWIST_HS] = T_2 / p->k_hs;
     } else {
         y[HG_Y_TWIST2] = v->T_w / v->k_t2;
     }
@@ -54,7 +57,9 @@ void hg_stepping_start(hg_runtime *rt, const hg_setup *s, const hg_vars *v, doub
     int k, flank = v->T_s < 0.0 ? HG_FLANK_COAST : HG_FLANK_DRIVE;
     memset(rt, 0, sizeof *rt);
     rt->t = rt->t_u0 = t0;
+    rt->w_wheel0 = v->w_p0 / p->ratio;
     hg_vars_inputs(v, &rt->u0);
+    hg_stepping_wheel_input(rt, s, &rt->u0, &rt->du);
     rt->u_end = rt->u0;
     if (hg_dyn_loaded_law(p)) hg_mesh_law_of_series(&s->gear, flank, 0.0, &lv, &law);
     if (p->mesh == HG_MESH_MODEL_VARYING)
@@ -80,6 +85,26 @@ void hg_stepping_start(hg_runtime *rt, const hg_setup *s, const hg_vars *v, doub
     }
     rt->eta_cycle = rt->eta_axle_cycle = 1.0;
     rt->restart = 1;
+}
+
+void hg_stepping_wheel_input(hg_runtime *rt, const hg_setup *s, hg_inputs *u, hg_inputs *du)
+{
+    double h_before = rt->t - rt->t_u0; /* the step that just ended (0 before the first) */
+    if (!s->p.half_shaft) return;
+    if (!rt->wheel_given && u->w_wheel != 0.0) rt->wheel_given = 1;
+    if (!rt->wheel_given) u->w_wheel = rt->w_wheel0;
+    if (du->w_wheel == 0.0 && h_before > 0.0)
+        du->w_wheel = (u->w_wheel - rt->w_wheel_last) / h_before;
+    rt->w_wheel_last = u->w_wheel;
+}
+
+double hg_stepping_wheel_torque(const hg_runtime *rt, double T_w_now)
+{
+    double h = rt->t - rt->t_u0, mean;
+    if (!(h > 0.0)) return T_w_now;
+    mean = (rt->y[HG_Y_IMP_W] - rt->imp_w0) / h;
+    if (!(rt->h_last > 0.0)) return mean;
+    return mean + (mean - rt->T_w_mean_last) * 2.0 * h / (h + rt->h_last);
 }
 
 void hg_stepping_inputs_at(const hg_runtime *rt, double t, hg_inputs *u)
@@ -108,11 +133,11 @@ int hg_stepping_jump_small(const hg_runtime *rt, const hg_setup *s, const double
 {
     double sum = 0.0;
     int k;
-    for (k = 0; k < HG_NY; k++) {
+    for (k = 0; k < s->n_active; k++) {
         double e = rt->h_int * (f_new[k] - f_old[k]) / (s->rtol * fabs(rt->y[k]) + s->atol[k]);
         sum += e * e;
     }
-    return sqrt(sum / HG_NY) <= 1.0;
+    return sqrt(sum / s->n_active) <= 1.0;
 }
 
 int hg_stepping_may_pass(const hg_runtime *rt)
@@ -139,7 +164,12 @@ void hg_stepping_begin(hg_runtime *rt, const hg_setup *s, const hg_inputs *u,
     rt->held = change != HG_INPUTS_SAME ? 0 : rt->held < HOLD_STEPS ? rt->held + 1 : HOLD_STEPS;
     rt->u0 = *u;
     rt->du = *du;
+    if (rt->t > rt->t_u0) { /* a step ended here: its mean wheel-end torque */
+        rt->h_last = rt->t - rt->t_u0;
+        rt->T_w_mean_last = (rt->y[HG_Y_IMP_W] - rt->imp_w0) / rt->h_last;
+    }
     rt->t_u0 = rt->t;
+    rt->imp_w0 = rt->y[HG_Y_IMP_W];
     wrap_angle(rt, s);
 }
 

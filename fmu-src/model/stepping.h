@@ -21,6 +21,12 @@ typedef struct {
     int restart;                   /* the integrator must restart before the next step */
     int held;                      /* steps in a row with the inputs unchanged (capped) */
     int ahead;                     /* the integrator stepped past t on the last step's inputs */
+    double imp_w0;                 /* y[HG_Y_IMP_W] at the step's start t_u0 [N m s] */
+    double T_w_mean_last, h_last;  /* mean T_w over the step before, and its length [N m], [s]
+                                      (h_last 0: no step before) */
+    int wheel_given;               /* w_wheel has been set to something but 0 since the start */
+    double w_wheel0;               /* the wheel speed taken until then: w_p0 / i [rad/s] */
+    double w_wheel_last;           /* the w_wheel of the step before [rad/s] */
     double h_int;                  /* mean integrator step of the last step [s]: the first step
                                       of the explicit method's restarts */
     double win_phi0, win_t0;       /* start of the averaging window: pinion angle, time */
@@ -38,6 +44,18 @@ typedef struct {
 void hg_stepping_start(hg_runtime *rt, const hg_setup *s, const hg_vars *v, double t0);
 
 /* The inputs at time t: u0 extrapolated with du. */
+/* load_mode = half_shaft, before a step: while the host has passed 0 (or nothing) for w_wheel
+ * since the start, the wheel turns at the gear's own start speed w_p0 / i (docs/integration.md,
+ * "The start"); unless the host gives w_wheel's derivative, the step runs on w_wheel extrapolated
+ * linearly from the last two steps' values (du), so that the wheel's angle the half-shaft sees
+ * is second-order in the step instead of lagging by h/2 times the change of speed. */
+void hg_stepping_wheel_input(hg_runtime *rt, const hg_setup *s, hg_inputs *u, hg_inputs *du);
+
+/* The torque to hold at the vehicle's wheels over the next step (output T_wheel): the mean of
+ * T_w over the last step extrapolated linearly over one step from the mean of the step before, so
+ * that the wheels receive the half-shaft's impulse to second order and all of it in the sum. */
+double hg_stepping_wheel_torque(const hg_runtime *rt, double T_w_now);
+
 void hg_stepping_inputs_at(const hg_runtime *rt, double t, hg_inputs *u);
 
 /* How the inputs u (derivatives du) of a step differ from those the last step ended with:

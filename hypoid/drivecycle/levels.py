@@ -32,8 +32,8 @@ MAP_T_MIN = min(TEMPERATURES_C) + ZERO_C
 # is in one of the three groups or is named in reaching_levels (a test checks it), so that a new
 # one is placed deliberately.
 REACHES_EVERY_LEVEL = frozenset({
-    "gear_set", "lubricant", "load_mode", "solver", "rtol", "atol",
-    "max_step", "steps_per_mesh_cycle", "I_s", "I_p", "I_g", "I_w", "k_t1", "k_t2", "zeta_2",
+    "gear_set", "lubricant", "load_mode", "solver", "rtol", "atol", "max_step",
+    "steps_per_mesh_cycle", "I_s", "I_p", "I_g", "I_w", "k_t1", "k_t2", "k_hs", "c_hs", "zeta_2",
     "zeta_3", "zeta_4", "w_p0", "governor_bandwidth", "n_avg_cycles", "axle_losses",
     "thermal_model", "ring_d", "ring_b", "r_m_p", "r_m_g", "delta_p", "delta_g", "beta_p",
     "beta_g", "alpha_n", "oil_level", "V_oil", "brg_ph_d", "brg_ph_D", "brg_ph_Y", "brg_ph_x",

@@ -296,6 +296,66 @@ static void test_output_sets(void)
     hg_model_free(m);
 }
 
+/* load_mode = half_shaft: a start from T_s alone (the half-shaft carries what the gear passes
+ * on, the wheel at the gear's own speed while w_wheel is 0), the energy audit with the
+ * half-shaft's spring and damper while the wheel speeds up, and the torque for the wheels
+ * (T_wheel) in a steady run: the half-shaft's torque. Frictionless mean mesh: at rest
+ * torque-wise the half-shaft's torque is T_s i (hand value). */
+static void half_shaft_start(hg_model *m, hg_vars *v)
+{
+    char err[HG_ERRLEN] = "";
+    start_values(v);
+    v->load_mode = HG_LOAD_MODE_HALF_SHAFT;
+    v->mesh_model = HG_MESH_MODEL_MEAN;
+    v->friction_model = HG_FRICTION_MODEL_NONE;
+    v->solver = HG_SOLVER_CVODE_BDF;
+    v->T_s = 100.0;
+    v->T_w = 0.0;     /* not used under half_shaft: never enters the start */
+    v->w_wheel = 0.0; /* never set */
+    CHECK(hg_model_setup(m, v, 0.0, err, sizeof err) == 0);
+}
+
+static void test_half_shaft(void)
+{
+    hg_model *m = hg_model_new("resources", NULL, NULL), *m2 = hg_model_new("resources", NULL, NULL);
+    hg_vars v, v2;
+    hg_inputs du;
+    char err[HG_ERRLEN] = "";
+    double E0, w_w0;
+    int k;
+    if (!m || !m2) return;
+    half_shaft_start(m, &v);
+    w_w0 = v.w_p0 / v.ratio;
+    CHECK_CLOSE(v.T_w_out, v.T_s * v.ratio, 1e-12, 0.0);
+    CHECK_CLOSE(v.T_wheel, v.T_w_out, 1e-15, 0.0);
+    E0 = v.E_stored;
+    /* w_wheel 0 (never set) runs as the gear's own start speed: bit for bit */
+    half_shaft_start(m2, &v2);
+    v2.w_wheel = w_w0;
+    memset(&du, 0, sizeof du);
+    for (k = 0; k < 5; k++) {
+        CHECK(hg_model_step(m, &v, &du, 1e-3, err, sizeof err) == 0);
+        CHECK(hg_model_step(m2, &v2, &du, 1e-3, err, sizeof err) == 0);
+    }
+    read_all(m, &v);
+    read_all(m2, &v2);
+    CHECK(same_real_outputs(&v, &v2));
+    /* held in equilibrium: no kick, the half-shaft keeps T_s i and T_wheel follows it */
+    CHECK_CLOSE(v.w_p, v.w_p0, 1e-9, 0.0);
+    CHECK_CLOSE(v.T_w_out, v.T_s * v.ratio, 1e-6, 0.0);
+    CHECK_CLOSE(v.T_wheel, v.T_s * v.ratio, 1e-6, 0.0);
+    /* the wheel speeds up by 1 rad/s per 10 ms: the half-shaft twists less, the audit closes */
+    for (k = 1; k <= 10; k++) {
+        v.w_wheel = w_w0 + 0.1 * k;
+        CHECK(hg_model_step(m, &v, &du, 1e-3, err, sizeof err) == 0);
+        hg_model_outputs(m, &v, HG_OUTSET_MAIN);
+        CHECK_CLOSE(audit(&v), v.E_stored - E0, 0.0, 1e-6 * v.E_in);
+    }
+    CHECK(v.T_w_out < v.T_s * v.ratio);
+    hg_model_free(m);
+    hg_model_free(m2);
+}
+
 int main(void)
 {
     test_setup_and_step();
@@ -303,5 +363,6 @@ int main(void)
     test_start_audit();
     test_input_ramp();
     test_errors();
+    test_half_shaft();
     CHECK_DONE();
 }

@@ -174,6 +174,31 @@ def test_vehicle_state_machine_and_bad_values(fmus, tmp_path):
     car.fmu.freeInstance()
 
 
+def test_vehicle_wheel_torque_coupling(fmus, tmp_path):
+    """coupling 3: the wheel torque in, the wheel speed out; the acceleration is the hand value
+    (T_wheel - r_dyn F_road) / J_v and the energy closes without a half-shaft."""
+    car = Vehicle(tmp_path)
+    car.fmu.instantiate()
+    car.fmu.setupExperiment(startTime=0.0)
+    m, r, v0, torque = 1500.0, 0.3, 10.0, 400.0
+    car.set(coupling=3, v0=v0, T_wheel=torque, T_hs0=100.0)
+    car.fmu.enterInitializationMode()
+    car.fmu.exitInitializationMode()
+    start = car.get("T_hs", "w_wheel", "a", "F_road", "E_kin", "E_spring", "twist")
+    j_v = m * r ** 2 + 3.0
+    assert start["T_hs"] == torque and start["twist"] == 0.0 and start["E_spring"] == 0.0
+    assert start["w_wheel"] == pytest.approx(v0 / r, rel=1e-15)
+    assert start["a"] == pytest.approx(r * (torque - r * start["F_road"]) / j_v, rel=1e-12)
+    for k in range(1000):
+        car.fmu.doStep(k * 1e-3, 1e-3)
+    end = car.get("E_in", "E_kin", "E_road", "E_grade", "E_damper", "E_spring")
+    assert end["E_damper"] == 0.0 and end["E_spring"] == 0.0
+    assert abs(end["E_in"] - (end["E_kin"] - start["E_kin"]) - end["E_road"]
+               - end["E_grade"]) < 1e-9 * end["E_in"]
+    car.fmu.terminate()
+    car.fmu.freeInstance()
+
+
 # ------------------------------------------------------------------ the coupled system
 
 
