@@ -11,7 +11,7 @@ from typing import NamedTuple
 
 MODEL_NAME = 'HypoidGearPair'
 MODEL_VERSION = '0.1.0'
-GUID = '{6a19fd93-50e4-534b-9c19-1710c9badcd2}'
+GUID = '{9b30ab22-7f9d-5cc3-9562-8ee0d9aae941}'
 
 
 class Variable(NamedTuple):
