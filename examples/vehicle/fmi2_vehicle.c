@@ -1,7 +1,7 @@
 /* A thin FMI 2.0 co-simulation layer around vehicle_model.c: instance, state machine, variable
- * access, stepping. No global state: everything lives in the instance. FMU states, directional
- * derivatives and input derivatives are not supported (the modelDescription says so) and return
- * fmi2Error. */
+ * access, stepping, FMU states (get, set, serialize: iterative masters roll the vehicle back).
+ * No global state: everything lives in the instance. Directional derivatives and input
+ * derivatives are not supported (the modelDescription says so) and return fmi2Error. */
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -346,46 +346,110 @@ static fmi2Status unsupported(fmi2Component comp, const char *fn)
     return fmi2Error;
 }
 
-fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *s)
+/* ------------------------------------------------------------------ FMU states
+ * A state is a copy of everything that evolves (the model: variables, states, time) and of the
+ * instance's mode; the model is plain data, so get and set are copies and the serialized form is
+ * a tagged copy of its bytes (for the same build of this FMU). */
+
+typedef struct {
+    vm_model model;
+    vm_state state;
+    double start_time, stop_time;
+    int stop_defined;
+} vm_snapshot;
+
+#define SNAPSHOT_TAG "LongitudinalVehicle-state-1"
+
+/* A refused state call: logged, fmi2Error, the instance as it was (nothing was changed). */
+static fmi2Status refuse(vm_instance *c, const char *fn, const char *why)
 {
-    (void)s;
-    return unsupported(c, "fmi2GetFMUstate");
+    logf_(c, fmi2Error, CAT_ERROR, "%s: %s", fn, why);
+    return fmi2Error;
 }
 
-fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate s)
+static void snapshot_take(const vm_instance *c, vm_snapshot *s)
 {
-    (void)s;
-    return unsupported(c, "fmi2SetFMUstate");
+    s->model = c->model;
+    s->state = c->state;
+    s->start_time = c->start_time;
+    s->stop_time = c->stop_time;
+    s->stop_defined = c->stop_defined;
 }
 
-fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *s)
+fmi2Status fmi2GetFMUstate(fmi2Component comp, fmi2FMUstate *out)
 {
-    (void)s;
-    return unsupported(c, "fmi2FreeFMUstate");
+    vm_instance *c = comp;
+    vm_snapshot *s;
+    if (!allowed(c, "fmi2GetFMUstate", ST_INIT | ST_STEP_COMPLETE | ST_TERMINATED)) return fmi2Error;
+    if (!out) return refuse(c, "fmi2GetFMUstate", "NULL state pointer");
+    s = *out ? (vm_snapshot *)*out : malloc(sizeof *s); /* a given state is overwritten */
+    if (!s) return refuse(c, "fmi2GetFMUstate", "out of memory");
+    snapshot_take(c, s);
+    *out = s;
+    return fmi2OK;
 }
 
-fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate s, size_t *size)
+fmi2Status fmi2SetFMUstate(fmi2Component comp, fmi2FMUstate in)
 {
-    (void)s;
-    (void)size;
-    return unsupported(c, "fmi2SerializedFMUstateSize");
+    vm_instance *c = comp;
+    const vm_snapshot *s = in;
+    if (!allowed(c, "fmi2SetFMUstate", ST_INSTANTIATED | ST_INIT | ST_STEP_COMPLETE |
+                                           ST_TERMINATED))
+        return fmi2Error;
+    if (!s) return refuse(c, "fmi2SetFMUstate", "NULL state");
+    c->model = s->model;
+    c->state = s->state;
+    c->start_time = s->start_time;
+    c->stop_time = s->stop_time;
+    c->stop_defined = s->stop_defined;
+    return fmi2OK;
 }
 
-fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate s, fmi2Byte b[], size_t size)
+fmi2Status fmi2FreeFMUstate(fmi2Component comp, fmi2FMUstate *s)
 {
-    (void)s;
-    (void)b;
-    (void)size;
-    return unsupported(c, "fmi2SerializeFMUstate");
+    (void)comp;
+    if (s) {
+        free(*s);
+        *s = NULL;
+    }
+    return fmi2OK;
 }
 
-fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte b[], size_t size,
-                                   fmi2FMUstate *s)
+fmi2Status fmi2SerializedFMUstateSize(fmi2Component comp, fmi2FMUstate s, size_t *size)
 {
-    (void)b;
-    (void)size;
-    (void)s;
-    return unsupported(c, "fmi2DeSerializeFMUstate");
+    vm_instance *c = comp;
+    if (!c) return fmi2Error;
+    if (!s || !size) return refuse(c, "fmi2SerializedFMUstateSize", "NULL state or size");
+    *size = sizeof SNAPSHOT_TAG + sizeof(vm_snapshot);
+    return fmi2OK;
+}
+
+fmi2Status fmi2SerializeFMUstate(fmi2Component comp, fmi2FMUstate s, fmi2Byte b[], size_t size)
+{
+    vm_instance *c = comp;
+    if (!c) return fmi2Error;
+    if (!s || !b || size < sizeof SNAPSHOT_TAG + sizeof(vm_snapshot))
+        return refuse(c, "fmi2SerializeFMUstate", "NULL state or buffer, or the buffer too small "
+                    "(see fmi2SerializedFMUstateSize)");
+    memcpy(b, SNAPSHOT_TAG, sizeof SNAPSHOT_TAG);
+    memcpy(b + sizeof SNAPSHOT_TAG, s, sizeof(vm_snapshot));
+    return fmi2OK;
+}
+
+fmi2Status fmi2DeSerializeFMUstate(fmi2Component comp, const fmi2Byte b[], size_t size,
+                                   fmi2FMUstate *out)
+{
+    vm_instance *c = comp;
+    vm_snapshot *s;
+    if (!c) return fmi2Error;
+    if (!b || !out || size != sizeof SNAPSHOT_TAG + sizeof(vm_snapshot) ||
+        memcmp(b, SNAPSHOT_TAG, sizeof SNAPSHOT_TAG) != 0)
+        return refuse(c, "fmi2DeSerializeFMUstate", "not a state serialized by this build of the "
+                    "FMU (tag or size differs)");
+    if (!(s = malloc(sizeof *s))) return refuse(c, "fmi2DeSerializeFMUstate", "out of memory");
+    memcpy(s, b + sizeof SNAPSHOT_TAG, sizeof *s);
+    *out = s;
+    return fmi2OK;
 }
 
 fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference u[], size_t nu,
