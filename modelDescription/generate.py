@@ -25,7 +25,11 @@ GROUPS = {  # TOML group -> (causality, variability, initial)
     "output": ("output", "continuous", None),
     "parameter": ("parameter", "fixed", "exact"),
     "calculated": ("calculatedParameter", "fixed", "calculated"),
+    "state": ("local", "continuous", "calculated"),       # a continuous state of its own
+    "derivative": ("local", "continuous", "calculated"),  # der(state)
 }
+COMPUTED = ("output", "calculated", "state", "derivative")  # the groups without a start value
+STATES_SET = "states"  # the output set of the states' own variables and the derivatives
 BASE_TYPES = ("Real", "Integer", "Boolean", "String")
 C_TYPES = {"Real": "double", "Integer": "int", "Boolean": "int", "String": "char *"}
 # The communication step hosts are proposed (DefaultExperiment): the half-shaft coupling holds
@@ -53,9 +57,37 @@ class Spec:
         self.start_dependencies = data.get("start_dependencies", {})
         self.fields = []  # (c_type, c_field, array length or 0)
         self.vars = []
-        for group in GROUPS:
+        for group in ("input", "output", "parameter", "calculated"):
             for item in data.get(group, []):
                 self._add(group, item)
+        self.states = []  # (y name, index of the state's variable, index of its derivative)
+        self._add_states(data.get("state", []))
+
+    def _add_states(self, items):
+        """The continuous states: an output of the same name or a local variable of their own,
+        then the derivative of each, value references after every other variable."""
+        if not items:
+            return
+        self.output_sets.append(STATES_SET)
+        index = {v["name"]: i for i, v in enumerate(self.vars)}
+        for item in items:
+            if item.get("output"):
+                if item["name"] not in index or self.vars[index[item["name"]]]["group"] != "output":
+                    sys.exit(f"variables.toml: state {item['name']}: no output of that name")
+                self.states.append([item["y"], index[item["name"]], None])
+                continue
+            local = {k: v for k, v in item.items() if k in ("name", "unit", "description")}
+            self._add("state", dict(local, set=STATES_SET))
+            self.states.append([item["y"], len(self.vars) - 1, None])
+        for state, item in zip(self.states, items):
+            v = self.vars[state[1]]
+            field = "der_" + v["field"]
+            self.fields.append(("double", field, 0))
+            self.vars.append(dict(name=f"der({v['name']})", group="derivative", typ="Real",
+                                  base="Real", start=None, field=field, set=STATES_SET,
+                                  unit=item["der_unit"], derivative=state[1] + 1,
+                                  description=f"time derivative of {v['name']}"))
+            state[2] = len(self.vars) - 1
 
     def _add(self, group, item):
         typ = item.get("type", "Real")
@@ -65,7 +97,8 @@ class Spec:
         n = item.get("array", 0)
         field = c_identifier(item["name"].replace("[k]", ""))
         self.fields.append((C_TYPES[base], field, n))
-        if item.get("set", "main") not in self.output_sets or ("set" in item and group != "output"):
+        if item.get("set", "main") not in self.output_sets or \
+                ("set" in item and group not in ("output", "state")):
             sys.exit(f"variables.toml: {item['name']}: set must name an [output_sets] entry "
                      "and is for outputs only")
         start = item.get("start")
@@ -75,6 +108,10 @@ class Spec:
             name = item["name"].replace("[k]", f"[{k}]") if n else item["name"]
             self.vars.append(dict(item, name=name, group=group, typ=typ, base=base, start=start,
                                   field=f"{field}[{k - 1}]" if n else field))
+
+    def event_indicators(self):
+        """numberOfEventIndicators: the model's, when it has states (Model Exchange)."""
+        return self.model.get("numberOfEventIndicators", 0) if self.states else 0
 
     def guid(self):
         return "{" + str(uuid.uuid5(uuid.NAMESPACE_URL, "hypoidgearpair:" + self.digest)) + "}"
@@ -148,6 +185,8 @@ def xml_variable(vr, v, enums):
     if v["typ"] in enums:
         tattrs += f' declaredType={quoteattr(v["typ"])}'
     tattrs += xml_value_attrs(v)
+    if "derivative" in v:  # the state's index (FMI 2.0)
+        tattrs += f' derivative="{v["derivative"]}"'
     if v["group"] in ("input", "parameter"):
         start = v["start"]
         if v["base"] == "Boolean":
@@ -182,19 +221,58 @@ def start_dependencies(spec):
     return deps
 
 
+def output_dependencies(spec, deps, i):
+    """The knowns output i depends on. Co-simulation: none (outputs are computed at the end of a
+    step, with the inputs held over it: setting an input moves none before the next step). With
+    Model Exchange in the same description the knowns are the inputs and the continuous states
+    at any instant, and one ModelStructure serves both interfaces: the inputs [start_dependencies]
+    gives the output (a superset of what moves it in continuous time) and every state."""
+    if not spec.states:
+        return []
+    inputs = [k for k in deps[i] if spec.vars[k - 1]["group"] == "input"]
+    return sorted(set(inputs) | {s + 1 for _, s, _ in spec.states})
+
+
 def model_structure(spec):
-    """ModelStructure: every output with dependencies="" (outputs are computed at the end of a
-    step, with the inputs held over it: setting an input moves none before the next step), the
-    initial unknowns with the inputs [start_dependencies] gives them and every parameter."""
+    """ModelStructure: the outputs' dependencies (output_dependencies), the derivatives (Model
+    Exchange: no dependencies attribute, every known), the initial unknowns with the inputs
+    [start_dependencies] gives them and every parameter (the states and the derivatives: every
+    known)."""
     outputs = [i + 1 for i, v in enumerate(spec.vars) if v["group"] == "output"]
     deps = start_dependencies(spec)
     lines = ["  <ModelStructure>", "    <Outputs>"]
-    lines += [f'      <Unknown index="{i}" dependencies=""/>' for i in outputs]
-    lines += ["    </Outputs>", "    <InitialUnknowns>"]
+    lines += [f'      <Unknown index="{i}" '
+              f'dependencies="{" ".join(map(str, output_dependencies(spec, deps, i)))}"/>'
+              for i in outputs]
+    lines += ["    </Outputs>"] + xml_derivatives(spec) + ["    <InitialUnknowns>"]
+    unknowns = dict(deps)
+    unknowns.update({i + 1: None for i, v in enumerate(spec.vars)
+                     if v["group"] in ("state", "derivative")})
     lines += [f'      <Unknown index="{i}" dependencies="{" ".join(map(str, d))}"/>'
-              for i, d in sorted(deps.items())]
+              if d is not None else f'      <Unknown index="{i}"/>'
+              for i, d in sorted(unknowns.items())]
     lines += ["    </InitialUnknowns>", "  </ModelStructure>"]
     return lines
+
+
+def xml_model_exchange(spec):
+    """The ModelExchange element (FMI 2.0), when the model has continuous states."""
+    if not spec.states:
+        return []
+    return [f'  <ModelExchange modelIdentifier={quoteattr(spec.model["modelIdentifier"])} '
+            'needsExecutionTool="false" completedIntegratorStepNotNeeded="false" '
+            'canBeInstantiatedOnlyOncePerProcess="false" canNotUseMemoryManagementFunctions="true" '
+            'canGetAndSetFMUstate="true" canSerializeFMUstate="true" '
+            'providesDirectionalDerivative="false"/>']
+
+
+def xml_derivatives(spec):
+    """ModelStructure/Derivatives: the derivatives in the order of the state vector."""
+    if not spec.states:
+        return []
+    return (["    <Derivatives>"] +
+            [f'      <Unknown index="{der + 1}"/>' for _, _, der in spec.states] +
+            ["    </Derivatives>"])
 
 
 def write_xml(spec, path):
@@ -207,7 +285,8 @@ def write_xml(spec, path):
         f'guid="{spec.guid()}" description={quoteattr(m["description"])} '
         f'version={quoteattr(m["version"])} author={quoteattr(m["author"])} '
         'generationTool="modelDescription/generate.py" variableNamingConvention="structured" '
-        'numberOfEventIndicators="0">',
+        f'numberOfEventIndicators="{spec.event_indicators()}">',
+    ] + xml_model_exchange(spec) + [
         f'  <CoSimulation modelIdentifier={quoteattr(m["modelIdentifier"])} '
         'needsExecutionTool="false" canHandleVariableCommunicationStepSize="true" '
         'canInterpolateInputs="true" maxOutputDerivativeOrder="0" canRunAsynchronuously="false" '
@@ -421,6 +500,26 @@ def c_inputs_source(inputs):
     return c
 
 
+def c_states_header(spec):
+    """The continuous states (Model Exchange) and the check of their order against the model's."""
+    order = " && ".join(f"HG_Y_{y} == {k}" for k, (y, _, _) in enumerate(spec.states))
+    return ["/* The continuous states k = 0 .. HG_NUM_STATES - 1, in the model's order: the value",
+            " * references of each state and of its derivative. HG_STATE_ORDER_OK is true where the",
+            " * model's state enum (HG_Y_*) has this order; the model layer checks it when built. */",
+            f"#define HG_NUM_STATES {len(spec.states)}",
+            f"#define HG_NUM_EVENT_INDICATORS {spec.event_indicators()}",
+            f"#define HG_STATE_ORDER_OK ({order or 1})",
+            "extern const unsigned hg_state_vr[HG_NUM_STATES];",
+            "extern const unsigned hg_derivative_vr[HG_NUM_STATES];", ""]
+
+
+def c_states_source(spec):
+    return ["const unsigned hg_state_vr[HG_NUM_STATES] = {"
+            + ", ".join(str(s) for _, s, _ in spec.states) + "};",
+            "const unsigned hg_derivative_vr[HG_NUM_STATES] = {"
+            + ", ".join(str(d) for _, _, d in spec.states) + "};", ""]
+
+
 def write_c(spec, directory):
     inputs = [(vr, v) for vr, v in enumerate(spec.vars) if v["group"] == "input"]
     for _, v in inputs:
@@ -435,7 +534,8 @@ def write_c(spec, directory):
          f"#define HG_NUM_VARS {len(spec.vars)}",
          "#define HG_FMI3_VR_TIME HG_NUM_VARS /* FMI 3.0: the independent variable */", "",
          "typedef enum { HG_REAL, HG_INTEGER, HG_BOOLEAN, HG_STRING } hg_base_type;",
-         "typedef enum { HG_INPUT, HG_OUTPUT, HG_PARAMETER, HG_CALCULATED } hg_causality;", ""]
+         "typedef enum { HG_INPUT, HG_OUTPUT, HG_PARAMETER, HG_CALCULATED, HG_LOCAL } hg_causality;",
+         ""]
     for ename, items in spec.enums.items():
         consts = ", ".join(f"HG_{ename.upper()}_{iname.upper()} = {i}"
                            for i, (iname, _) in enumerate(items, 1))
@@ -472,11 +572,12 @@ def write_c(spec, directory):
           "void *hg_var_ptr(hg_vars *v, const hg_var_info *info);",
           "const void *hg_var_cptr(const hg_vars *v, const hg_var_info *info);", ""]
     h += c_inputs_header(inputs)
+    h += c_states_header(spec)
     h += ["#endif", ""]
     kinds = {"Real": "HG_REAL", "Integer": "HG_INTEGER", "Boolean": "HG_BOOLEAN",
              "String": "HG_STRING"}
     causal = {"input": "HG_INPUT", "output": "HG_OUTPUT", "parameter": "HG_PARAMETER",
-              "calculated": "HG_CALCULATED"}
+              "calculated": "HG_CALCULATED", "state": "HG_LOCAL", "derivative": "HG_LOCAL"}
     c = ["/* Generated by modelDescription/generate.py from variables.toml: do not edit. */",
          '#include "hg_vars.h"', "", "const hg_var_info hg_var_table[HG_NUM_VARS] = {"]
     for vr, v in enumerate(spec.vars):
@@ -493,7 +594,7 @@ def write_c(spec, directory):
                  f'{input_index.get(vr, -1)}, '
                  f'{spec.output_sets.index(v.get("set", spec.output_sets[0]))}, '
                  f'{c_units(spec, v)}}},')
-    c += ["};", ""] + c_fmi3_table(spec) + c_inputs_source(inputs)
+    c += ["};", ""] + c_fmi3_table(spec) + c_inputs_source(inputs) + c_states_source(spec)
     write_if_changed(f"{directory}/hg_vars.h", "\n".join(h))
     write_if_changed(f"{directory}/hg_vars.c", "\n".join(c))
 
@@ -518,6 +619,11 @@ def readme_table(spec):
     for v in spec.vars:
         if v.get("array") and not v["name"].endswith("[1]") and "[1]." not in v["name"]:
             continue
+        if v["group"] == "derivative":  # one row for them all, after the states
+            if v is next(d for d in spec.vars if d["group"] == "derivative"):
+                rows.append("| `der(<state>)` | local | Real | the state's per s |  | the time "
+                            "derivative of each continuous state (Model Exchange) |")
+            continue
         name = v["name"].replace("[1]", "[k]") if v.get("array") else v["name"]
         typ = v["typ"]
         start = f"`{v.get('start', '')}`"
@@ -527,7 +633,7 @@ def readme_table(spec):
         unit = v.get("unit", "") if v["base"] == "Real" else ""
         if v.get("displayUnit"):
             unit += f" ({README_UNIT_TEXT.get(v['displayUnit'], v['displayUnit'])})"
-        start = "" if v["group"] in ("output", "calculated") else start
+        start = "" if v["group"] in COMPUTED else start
         rows.append(f"| `{name}` | {GROUPS[v['group']][0]} | {typ} | {unit} | {start} | "
                     f"{v['description']} |")
     return "\n".join(rows)
@@ -560,7 +666,7 @@ def python_entry(vr, v, spec):
                   type="Enumeration" if enum else v["base"], enumeration=enum,
                   unit=v.get("unit") if v["base"] == "Real" else None,
                   display_unit=v.get("displayUnit"),
-                  start=None if v["group"] in ("output", "calculated") else v.get("start"),
+                  start=None if v["group"] in COMPUTED else v.get("start"),
                   min=v.get("min", 1 if enum else None),
                   max=v.get("max", len(spec.enums[enum]) if enum else None),
                   description=v["description"])

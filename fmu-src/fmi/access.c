@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "fmi/instance.h"
+#include "model/exchange.h"
 
 const hg_var_info *hg_lookup(hg_instance *c, const char *fn, hg_vr vr,
                              hg_base_type type)
@@ -49,8 +50,8 @@ hg_status hg_get_value(hg_instance *c, const char *fn, hg_base_type type, hg_vr 
 {
     static const size_t size[] = {sizeof(double), sizeof(int), sizeof(int), sizeof(char *)};
     const hg_var_info *info = hg_lookup(c, fn, vr, type);
-    if (!info || (info->causality == HG_OUTPUT && hg_instance_output(c, fn, info) != HG_OK))
-        return HG_ERROR;
+    int computed = info && (info->causality == HG_OUTPUT || info->causality == HG_LOCAL);
+    if (!info || (computed && hg_instance_output(c, fn, info) != HG_OK)) return HG_ERROR;
     memcpy(value, hg_var_cptr(&c->vars, info), size[type]);
     return HG_OK;
 }
@@ -60,7 +61,7 @@ hg_status hg_get_value(hg_instance *c, const char *fn, hg_base_type type, hg_vr 
 hg_status hg_prepare_set(hg_instance *c, const char *fn, const void *vr, size_t nvr,
                          const void *values)
 {
-    return hg_allowed(c, fn, ST_BEFORE_RUN | ST_STEP_COMPLETE) &&
+    return hg_allowed(c, fn, ST_BEFORE_RUN | ST_RUNNING) &&
                    !hg_check_array_args(c, fn, vr, nvr, values)
                ? HG_OK
                : HG_ERROR;
@@ -93,10 +94,14 @@ static int check_range(hg_instance *c, const char *fn, const hg_var_info *info, 
     return 0;
 }
 
-/* Before the run, parameters and initial inputs define the start: set up again when asked. */
-static void note_set(hg_instance *c)
+/* Before the run, parameters and initial inputs define the start: set up again when asked. In
+ * Model Exchange the model's right-hand side takes a new input at once. */
+static void note_set(hg_instance *c, const hg_var_info *info)
 {
-    if (c->state & ST_BEFORE_RUN) c->set_up = 0;
+    if (c->state & ST_BEFORE_RUN)
+        c->set_up = 0;
+    else if (c->model_exchange && c->set_up && info->causality == HG_INPUT)
+        hg_exchange_inputs(c->model, &c->vars);
 }
 
 hg_status hg_set_number(hg_instance *c, const char *fn, hg_base_type type, hg_vr vr, double x,
@@ -109,7 +114,7 @@ hg_status hg_set_number(hg_instance *c, const char *fn, hg_base_type type, hg_vr
         *(double *)hg_var_ptr(&c->vars, info) = x;
     else
         *(int *)hg_var_ptr(&c->vars, info) = type == HG_BOOLEAN ? k != 0 : k;
-    note_set(c);
+    note_set(c, info);
     return HG_OK;
 }
 
@@ -128,6 +133,6 @@ hg_status hg_set_string(hg_instance *c, const char *fn, hg_vr vr, const char *va
     slot = (char **)hg_var_ptr(&c->vars, info);
     free(*slot);
     *slot = copy;
-    note_set(c);
+    note_set(c, info);
     return HG_OK;
 }

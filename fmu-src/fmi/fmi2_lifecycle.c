@@ -39,11 +39,14 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
     c = hg_instantiate(__func__, name, guid, guids, resources, 1, emit,
                        (hg_any_fn)functions->logger, functions->componentEnvironment,
                        logging_on);
-    if (c && type != fmi2CoSimulation) {
-        hg_error(c, __func__, "this FMU supports co-simulation only");
+    if (c && type != fmi2CoSimulation && type != fmi2ModelExchange) {
+        hg_error(c, __func__, "fmuType = %d is neither fmi2ModelExchange (%d) nor "
+                 "fmi2CoSimulation (%d)", (int)type, (int)fmi2ModelExchange,
+                 (int)fmi2CoSimulation);
         hg_free_instance(c);
         return NULL;
     }
+    if (c) c->model_exchange = type == fmi2ModelExchange;
     return c;
 }
 

@@ -12,7 +12,8 @@ fmi2Status fmi2SetRealInputDerivatives(fmi2Component comp, const fmi2ValueRefere
 {
     hg_instance *c = comp;
     size_t i;
-    if (!hg_allowed(c, __func__, ST_BEFORE_RUN | ST_STEP_COMPLETE) ||
+    if (!hg_interface(c, __func__, 0) ||
+        !hg_allowed(c, __func__, ST_BEFORE_RUN | ST_STEP_COMPLETE) ||
         hg_check_array_args(c, __func__, vr, nvr, value) ||
         hg_check_array_args(c, __func__, vr, nvr, order))
         return fmi2Error;
@@ -37,7 +38,7 @@ fmi2Status fmi2GetRealOutputDerivatives(fmi2Component comp, const fmi2ValueRefer
     (void)nvr;
     (void)order;
     (void)value;
-    if (!hg_allowed(c, __func__, ST_READABLE)) return fmi2Error;
+    if (!hg_interface(c, __func__, 0) || !hg_allowed(c, __func__, ST_READABLE)) return fmi2Error;
     hg_error(c, __func__, "not provided (maxOutputDerivativeOrder = 0)");
     return fmi2Error;
 }
@@ -77,7 +78,7 @@ fmi2Status fmi2CancelStep(fmi2Component comp)
 /* A status query is allowed after initialization; its value pointer must not be NULL. */
 static int status_query(hg_instance *c, const char *fn, const void *value)
 {
-    if (!hg_allowed(c, fn, ST_STATUS)) return 0;
+    if (!hg_allowed(c, fn, ST_STATUS) || !hg_interface(c, fn, 0)) return 0;
     if (value) return 1;
     hg_error(c, fn, "the value pointer is NULL");
     return 0;
@@ -86,7 +87,7 @@ static int status_query(hg_instance *c, const char *fn, const void *value)
 /* A status kind this FMU does not provide. */
 static fmi2Status no_status(hg_instance *c, const char *fn)
 {
-    return hg_allowed(c, fn, ST_STATUS) ? fmi2Discard : fmi2Error;
+    return hg_allowed(c, fn, ST_STATUS) && hg_interface(c, fn, 0) ? fmi2Discard : fmi2Error;
 }
 
 fmi2Status fmi2GetStatus(fmi2Component comp, const fmi2StatusKind s, fmi2Status *value)

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "fmi/instance.h"
+#include "model/exchange.h"
 
 const char *const hg_category_names[N_CATEGORIES] = {"logEvents", "logStatusWarning",
                                                      "logStatusError", "logAll"};
@@ -73,6 +74,8 @@ static const char *state_name(hg_fmi_state s)
     case ST_INITIALIZATION: return "initialization mode";
     case ST_STEP_COMPLETE: return "step complete";
     case ST_TERMINATED: return "terminated";
+    case ST_EVENT_MODE: return "event mode";
+    case ST_CONTINUOUS_TIME: return "continuous-time mode";
     default: return "error";
     }
 }
@@ -82,6 +85,16 @@ int hg_allowed(hg_instance *c, const char *fn, int states)
     if (!c) return 0;
     if (c->state & states) return 1;
     hg_log(c, HG_ERROR, CAT_ERROR, "%s is not allowed in state '%s'", fn, state_name(c->state));
+    return 0;
+}
+
+int hg_interface(hg_instance *c, const char *fn, int model_exchange)
+{
+    if (!c) return 0;
+    if (c->model_exchange == model_exchange) return 1;
+    hg_error(c, fn, "is a %s function, and this instance was instantiated for %s",
+             model_exchange ? "Model Exchange" : "co-simulation",
+             c->model_exchange ? "Model Exchange" : "co-simulation");
     return 0;
 }
 
@@ -195,5 +208,6 @@ hg_status hg_ensure_set_up(hg_instance *c, const char *fn)
         return HG_ERROR;
     }
     c->set_up = 1;
+    if (c->model_exchange) hg_exchange_begin(c->model, &c->vars);
     return HG_OK;
 }

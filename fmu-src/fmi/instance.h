@@ -8,7 +8,8 @@
  *   snapshot.c       FMU state snapshots and their serialization
  *   vars.c, uri.c    hg_vars start values and copies; file:// URIs
  * FMI 2.0: fmi2_lifecycle.c, fmi2_access.c, fmi2_step.c (input derivatives, status queries),
- * fmi2_state.c. FMI 3.0: fmi3_lifecycle.c, fmi3_access.c (typed, arrays), fmi3_step.c,
+ * fmi2_state.c, fmi2_me.c (Model Exchange: time, continuous states, derivatives, event
+ * indicators, event and continuous-time modes, over model/exchange.h). FMI 3.0: fmi3_lifecycle.c, fmi3_access.c (typed, arrays), fmi3_step.c,
  * fmi3_state.c, fmi3_unsupported.c (the functions of interfaces this FMU does not implement). */
 #ifndef HG_INSTANCE_H
 #define HG_INSTANCE_H
@@ -24,18 +25,24 @@ typedef enum { HG_OK, HG_WARNING, HG_DISCARD, HG_ERROR, HG_FATAL } hg_status;
 /* A value reference: hg_vr and fmi3ValueReference are both unsigned 32-bit. */
 typedef unsigned int hg_vr;
 
-/* Co-simulation states (FMI 2.0's step complete is FMI 3.0's step mode) (bit flags, so a function can name the set it is allowed in). */
+/* The states (bit flags, so a function can name the set it is allowed in): co-simulation steps
+ * in ST_STEP_COMPLETE (FMI 2.0's step complete is FMI 3.0's step mode), Model Exchange
+ * alternates between ST_EVENT_MODE and ST_CONTINUOUS_TIME; an instance is one or the other from
+ * its instantiation on. */
 typedef enum {
     ST_INSTANTIATED = 1,
     ST_INITIALIZATION = 2,
     ST_STEP_COMPLETE = 4,
     ST_TERMINATED = 8,
-    ST_ERROR = 16
+    ST_ERROR = 16,
+    ST_EVENT_MODE = 32,
+    ST_CONTINUOUS_TIME = 64
 } hg_fmi_state;
 
 /* The sets of states the functions are allowed in. */
-#define ST_ANY (ST_INSTANTIATED | ST_INITIALIZATION | ST_STEP_COMPLETE | ST_TERMINATED | ST_ERROR)
-#define ST_READABLE (ST_INITIALIZATION | ST_STEP_COMPLETE | ST_TERMINATED | ST_ERROR)
+#define ST_RUNNING (ST_STEP_COMPLETE | ST_EVENT_MODE | ST_CONTINUOUS_TIME) /* after initialization */
+#define ST_ANY (ST_INSTANTIATED | ST_INITIALIZATION | ST_RUNNING | ST_TERMINATED | ST_ERROR)
+#define ST_READABLE (ST_INITIALIZATION | ST_RUNNING | ST_TERMINATED | ST_ERROR)
 #define ST_BEFORE_RUN (ST_INSTANTIATED | ST_INITIALIZATION)
 #define ST_STATUS (ST_STEP_COMPLETE | ST_TERMINATED | ST_ERROR) /* status queries, termination */
 
@@ -57,6 +64,7 @@ struct hg_instance {
     void *env;               /* the host's component / instance environment */
     int log_on[N_CATEGORIES];
     hg_fmi_state state;
+    int model_exchange; /* instantiated for Model Exchange (else co-simulation) */
     char *resource_dir;
     hg_vars vars;
     double start_time;
@@ -80,10 +88,15 @@ hg_status hg_fail(hg_instance *c, const char *fn, const char *why);
 /* Returns 1 when the call is allowed in the current state, else logs and returns 0. */
 int hg_allowed(hg_instance *c, const char *fn, int states);
 
+/* Returns 1 when the instance has the interface (model_exchange 1: Model Exchange, 0:
+ * co-simulation) that fn belongs to, else logs and returns 0. */
+int hg_interface(hg_instance *c, const char *fn, int model_exchange);
+
 /* The instance's model, created on first use with logging through the host. NULL: no memory. */
 hg_model *hg_instance_model(hg_instance *c);
 
-/* Sets the model up for the current parameters and initial inputs, once. */
+/* Sets the model up for the current parameters and initial inputs, once (in Model Exchange also
+ * hands it to the host's integrator). */
 hg_status hg_ensure_set_up(hg_instance *c, const char *fn);
 
 /* Before output info is read: brings the outputs in c->vars up to date with the model (they

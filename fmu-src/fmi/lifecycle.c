@@ -143,6 +143,7 @@ hg_status hg_setup_experiment(hg_instance *c, const char *fn, double start, int 
         return HG_ERROR;
     }
     c->start_time = start;
+    c->set_up = 0; /* a model set up early (Model Exchange's nominals) starts at start */
     c->stop_defined = stop_defined != 0;
     c->stop_time = c->stop_defined ? stop : 0.0;
     return HG_OK;
@@ -159,13 +160,13 @@ hg_status hg_exit_initialization(hg_instance *c, const char *fn)
 {
     if (!hg_allowed(c, fn, ST_INITIALIZATION)) return HG_ERROR;
     if (hg_ensure_set_up(c, fn) != HG_OK) return HG_ERROR;
-    c->state = ST_STEP_COMPLETE;
+    c->state = c->model_exchange ? ST_EVENT_MODE : ST_STEP_COMPLETE;
     return HG_OK;
 }
 
 hg_status hg_terminate(hg_instance *c, const char *fn)
 {
-    if (!hg_allowed(c, fn, ST_STEP_COMPLETE | ST_ERROR)) return HG_ERROR;
+    if (!hg_allowed(c, fn, ST_RUNNING | ST_ERROR)) return HG_ERROR;
     c->state = ST_TERMINATED;
     return HG_OK;
 }

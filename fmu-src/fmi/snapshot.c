@@ -12,6 +12,7 @@
 
 typedef struct {
     hg_fmi_state state;
+    int model_exchange; /* of the instance it was taken from */
     int set_up;
     double start_time;
     int stop_defined;
@@ -39,6 +40,7 @@ hg_status hg_get_state(hg_instance *c, const char *fn, void **out)
         return HG_ERROR;
     }
     s->state = c->state;
+    s->model_exchange = c->model_exchange;
     s->set_up = c->set_up;
     s->start_time = c->start_time;
     s->stop_defined = c->stop_defined;
@@ -99,6 +101,12 @@ hg_status hg_set_state(hg_instance *c, const char *fn, const void *state)
     }
     if (!c->resource_dir && ((const hg_snapshot *)state)->set_up) {
         hg_error(c, fn, "this instance has no resource location");
+        return HG_ERROR;
+    }
+    if (((const hg_snapshot *)state)->model_exchange != c->model_exchange) {
+        hg_error(c, fn, "the state was taken from a %s instance, this one is %s",
+                 c->model_exchange ? "co-simulation" : "Model Exchange",
+                 c->model_exchange ? "Model Exchange" : "co-simulation");
         return HG_ERROR;
     }
     return restore(c, fn, state);
@@ -177,16 +185,24 @@ hg_status hg_serialize(hg_instance *c, const char *fn, const void *state, void *
     return HG_OK;
 }
 
+/* The states an instance of either interface can be in. */
+static int state_valid(hg_fmi_state state, int model_exchange)
+{
+    int own = model_exchange ? ST_EVENT_MODE | ST_CONTINUOUS_TIME : ST_STEP_COMPLETE;
+    return state == ST_INSTANTIATED || state == ST_INITIALIZATION || state == ST_TERMINATED ||
+           state == ST_ERROR || ((state & own) && !(state & (state - 1))); /* one flag */
+}
+
 /* A deserialized snapshot comes from outside: check what would make it unsafe or meaningless. */
 static int header_valid(const hg_snapshot *s)
 {
     int k;
-    if (s->state != ST_INSTANTIATED && s->state != ST_INITIALIZATION &&
-        s->state != ST_STEP_COMPLETE && s->state != ST_TERMINATED && s->state != ST_ERROR)
+    if ((s->model_exchange != 0 && s->model_exchange != 1) ||
+        !state_valid(s->state, s->model_exchange))
         return 0;
     if ((s->set_up != 0 && s->set_up != 1) || (s->stop_defined != 0 && s->stop_defined != 1))
         return 0;
-    if (s->state == ST_STEP_COMPLETE && !s->set_up) return 0; /* stepping needs a set-up model */
+    if ((s->state & ST_RUNNING) && !s->set_up) return 0; /* running needs a set-up model */
     if (!isfinite(s->start_time) || (s->stop_defined && !(s->stop_time >= s->start_time)))
         return 0;
     for (k = 0; k < HG_NUM_INPUTS; k++)

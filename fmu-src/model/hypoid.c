@@ -7,23 +7,12 @@
 
 #include "io/constants.h"
 #include "model/friction_table_policy.h"
+#include "model/model_object.h"
 #include "model/outputs.h"
-#include "model/setup.h"
 #include "model/stepping.h"
-#include "solver/solver.h"
 
 #define MAX_EVENTS_PER_STEP 100000
 #define MAX_SOLVER_STEPS 500000 /* per call of the integrator */
-
-struct hg_model {
-    char *resource_dir;
-    hg_logger log;
-    hg_setup s;
-    hg_solver *solver;
-    hg_ft_set *tables; /* friction_table on with an EHL friction model, else NULL */
-    hg_runtime rt;
-    int outputs_current[HG_NUM_OUTSETS]; /* each set of outputs written last is that of rt */
-};
 
 hg_model *hg_model_new(const char *resource_dir, hg_log_fn log, void *log_ctx)
 {
@@ -126,7 +115,10 @@ static void write_outputs(hg_model *m, hg_vars *v, int set)
         if (m->solver) hg_solver_stats(m->solver, &steps, &evals);
         /* the same unless restored or failed: a restart */
         m->s.p.tables = hg_ftp_of_state(m->tables, &m->rt, &m->s, &m->log);
-        hg_outputs_main(&m->s, &m->rt, steps, evals, v);
+        if (set == HG_OUTSET_STATES)
+            hg_outputs_states(&m->s, &m->rt, v);
+        else
+            hg_outputs_main(&m->s, &m->rt, steps, evals, v);
     }
     m->outputs_current[set] = 1;
 }
@@ -137,7 +129,7 @@ static void write_all_outputs(hg_model *m, hg_vars *v)
     for (set = 0; set < HG_NUM_OUTSETS; set++) write_outputs(m, v, set);
 }
 
-static void outputs_stale(hg_model *m)
+void hg_model_outputs_stale(hg_model *m)
 {
     memset(m->outputs_current, 0, sizeof m->outputs_current);
 }
@@ -281,7 +273,7 @@ int hg_model_step(hg_model *m, hg_vars *v, const hg_inputs *du, double h, char *
 {
     hg_runtime start = m->rt;
     int bad = -1;
-    outputs_stale(m);
+    hg_model_outputs_stale(m);
     if (!advance(m, v, du, h, err, errlen) && (bad = nonfinite_state(m->rt.y)) < 0) return 0;
     if (bad >= 0)
         hg_errorf(err, errlen, "state %d of the integrator became %g at t = %.9g s", bad,

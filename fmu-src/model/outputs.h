@@ -16,4 +16,8 @@ void hg_outputs_main(const hg_setup *s, const hg_runtime *rt, long steps, long e
  * P_loss needs the main outputs of v to be current. */
 void hg_outputs_pairs(const hg_setup *s, const hg_runtime *rt, hg_vars *v);
 
+/* Fills the continuous states' own variables and every state's derivative in v (variables.toml's
+ * [[state]]: hg_state_vr, hg_derivative_vr) as the right-hand side computes them. */
+void hg_outputs_states(const hg_setup *s, const hg_runtime *rt, hg_vars *v);
+
 #endif

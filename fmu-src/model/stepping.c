@@ -148,10 +148,17 @@ int hg_stepping_may_pass(const hg_runtime *rt)
 }
 
 /* Keep the pinion angle small (rtol acts on |phi_p|) by whole load-share periods. */
-static void wrap_angle(hg_runtime *rt, const hg_setup *s)
+static double load_share_period(const hg_setup *s) { return 3.0 * HG_TWO_PI / s->gear.N_p; }
+
+int hg_stepping_wrap_due(const hg_runtime *rt, const hg_setup *s)
 {
-    double period = 3.0 * HG_TWO_PI / s->gear.N_p, shift;
-    if (fabs(rt->y[HG_Y_PHI_P]) < WRAP_PERIODS * period) return;
+    return fabs(rt->y[HG_Y_PHI_P]) >= WRAP_PERIODS * load_share_period(s);
+}
+
+void hg_stepping_wrap(hg_runtime *rt, const hg_setup *s)
+{
+    double period = load_share_period(s), shift;
+    if (!hg_stepping_wrap_due(rt, s)) return;
     shift = period * floor(rt->y[HG_Y_PHI_P] / period);
     rt->y[HG_Y_PHI_P] -= shift;
     rt->win_phi0 -= shift;
@@ -170,7 +177,7 @@ void hg_stepping_begin(hg_runtime *rt, const hg_setup *s, const hg_inputs *u,
     }
     rt->t_u0 = rt->t;
     rt->imp_w0 = rt->y[HG_Y_IMP_W];
-    wrap_angle(rt, s);
+    hg_stepping_wrap(rt, s);
 }
 
 /* Variable-step solvers: the user's max_step, or automatically 1/steps_per_mesh of a mesh period

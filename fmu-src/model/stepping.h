@@ -70,6 +70,11 @@ hg_input_change hg_stepping_change(const hg_runtime *rt, const hg_inputs *u,
 void hg_stepping_begin(hg_runtime *rt, const hg_setup *s, const hg_inputs *u,
                        const hg_inputs *du, hg_input_change change);
 
+/* Whether the pinion angle is due to be wrapped by whole load-share periods, and the wrap (the
+ * window's start moves with it; the integrator must restart). */
+int hg_stepping_wrap_due(const hg_runtime *rt, const hg_setup *s);
+void hg_stepping_wrap(hg_runtime *rt, const hg_setup *s);
+
 /* Whether a jump of the right-hand side from f_old to f_new at the current state is small
  * against the integrator's tolerances: its effect over one mean integrator step,
  * h_int |f_new - f_old|, has a weighted RMS norm (weights rtol |y| + atol) of at most 1. */

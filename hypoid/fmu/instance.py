@@ -77,7 +77,14 @@ def _description(directory):
 # ---------------------------------------------------------------------------- one instance
 class Instance:
     """An instantiated co-simulation slave. `messages` holds (status, category, text) of the
-    FMU's log (the last `keep_messages`); `logging` switches on the FMU's debug logging."""
+    FMU's log (the last `keep_messages`); `logging` switches on the FMU's debug logging.
+    hypoid.fmu.exchange.ExchangeInstance is the same for Model Exchange."""
+
+    fmpy_class = FMU2Slave  # the fmpy class of the interface
+
+    def _interface(self):
+        """The model description's element of the interface (its modelIdentifier)."""
+        return self.md.coSimulation
 
     def __init__(self, fmu_path, unzip_dir=None, name="hypoid", logging=False,
                  keep_messages=1000, model_identifier=None, guid=None):
@@ -89,10 +96,10 @@ class Instance:
         self._n_logged = 0  # messages logged so far (the list keeps only the last ones)
         self.keep_messages = keep_messages
         self._callbacks = self._make_callbacks()
-        self.slave = FMU2Slave(guid=guid or self.md.guid, unzipDirectory=self.unzip_dir,
-                               modelIdentifier=model_identifier
-                               or self.md.coSimulation.modelIdentifier,
-                               instanceName=name)
+        self.slave = self.fmpy_class(guid=guid or self.md.guid, unzipDirectory=self.unzip_dir,
+                                     modelIdentifier=model_identifier
+                                     or self._interface().modelIdentifier,
+                                     instanceName=name)
         self._call(self.slave.instantiate, callbacks=self._callbacks, loggingOn=logging)
         self.t = 0.0
         self.used = False

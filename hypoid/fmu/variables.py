@@ -11,7 +11,7 @@ from typing import NamedTuple
 
 MODEL_NAME = 'HypoidGearPair'
 MODEL_VERSION = '0.1.0'
-GUID = '{9b30ab22-7f9d-5cc3-9562-8ee0d9aae941}'
+GUID = '{4348b185-e079-5455-b417-9144ecd24d29}'
 
 
 class Variable(NamedTuple):
@@ -31,7 +31,7 @@ class Variable(NamedTuple):
 
 ENUMERATIONS = {'load_mode': {'torque': 1, 'speed': 2, 'half_shaft': 3}, 'mesh_model': {'mean': 1, 'varying': 2, 'rigid': 3}, 'backlash_model': {'exact': 1, 'smoothed': 2}, 'friction_model': {'none': 1, 'coulomb': 2, 'ehl_isothermal': 3, 'ehl_thermal': 4, 'map': 5}, 'hertz_model': {'exact': 1, 'approx': 2}, 'roelands_z': {'simple': 1, 'exact': 2}, 'shear_pressure': {'mean': 1, 'max': 2, 'hertz': 3}, 'relaxation': {'constant': 1, 'ttps': 2}, 'friction_preset': {'parameters': 1, 'paper': 2}, 'tooth_data': {'loaded': 1, 'paper': 2}, 'preset': {'parameters': 1, 'paper': 2}, 'axle_losses': {'mesh': 1, 'full': 2}, 'thermal_model': {'fixed': 1, 'sump': 2}, 'solver': {'cvode_bdf': 1, 'cvode_adams': 2, 'newmark': 3, 'arkode_erk': 4, 'auto': 5}}
 
-DISPLAY_UNITS = {'m': {'um': (1000000.0, 0.0), 'mm': (1000.0, 0.0)}, 'rad/s': {'rpm': (9.549296585513721, 0.0)}, 'K': {'degC': (1.0, -273.15)}, 'N': {}, 'N.m': {}, 'W': {}, 'J': {}, 'Pa': {'GPa': (1e-09, 0.0), 'MPa': (1e-06, 0.0)}, 'Pa.s': {'mPa.s': (1000.0, 0.0)}, 'm/s': {}, 's': {}, 'Hz': {}, 'kg.m2': {}, 'rad': {'deg': (57.29577951308232, 0.0)}, 'm2': {}, 'm3': {'L': (1000.0, 0.0)}, 'J/K': {}, 'W/(m2.K)': {}, 'N/m': {}, 'N.s/m': {}, 'N.m/rad': {}, 'N.m.s/rad': {}, 'W/(m.K)': {}, 'J/(kg.K)': {}, 'kg/m3': {}, 'm2/s': {'mm2/s': (1000000.0, 0.0)}, '1/K': {}}
+DISPLAY_UNITS = {'m': {'um': (1000000.0, 0.0), 'mm': (1000.0, 0.0)}, 'rad/s': {'rpm': (9.549296585513721, 0.0)}, 'rad/s2': {}, 'K/s': {}, 'N.m/s': {}, 'N.m.s': {}, 'K': {'degC': (1.0, -273.15)}, 'N': {}, 'N.m': {}, 'W': {}, 'J': {}, 'Pa': {'GPa': (1e-09, 0.0), 'MPa': (1e-06, 0.0)}, 'Pa.s': {'mPa.s': (1000.0, 0.0)}, 'm/s': {}, 's': {}, 'Hz': {}, 'kg.m2': {}, 'rad': {'deg': (57.29577951308232, 0.0)}, 'm2': {}, 'm3': {'L': (1000.0, 0.0)}, 'J/K': {}, 'W/(m2.K)': {}, 'N/m': {}, 'N.s/m': {}, 'N.m/rad': {}, 'N.m.s/rad': {}, 'W/(m.K)': {}, 'J/(kg.K)': {}, 'kg/m3': {}, 'm2/s': {'mm2/s': (1000000.0, 0.0)}, '1/K': {}}
 
 _TABLE = (
     Variable(name='T_s', vr=0, causality='input', variability='continuous', type='Real', enumeration=None, unit='N.m', display_unit=None, start=100.0, min=-20000.0, max=20000.0, description='torque applied at the free end of the input (pinion) shaft; positive drives'),
@@ -243,6 +243,40 @@ _TABLE = (
     Variable(name='N_p', vr=206, causality='calculatedParameter', variability='fixed', type='Integer', enumeration=None, unit=None, display_unit=None, start=None, min=None, max=None, description='pinion teeth of the gear set'),
     Variable(name='N_g', vr=207, causality='calculatedParameter', variability='fixed', type='Integer', enumeration=None, unit=None, display_unit=None, start=None, min=None, max=None, description='gear teeth of the gear set'),
     Variable(name='ratio', vr=208, causality='calculatedParameter', variability='fixed', type='Real', enumeration=None, unit='', display_unit=None, start=None, min=None, max=None, description='gear ratio i = N_g/N_p'),
+    Variable(name='twist_1', vr=209, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad', display_unit=None, start=None, min=None, max=None, description='input-shaft twist phi_s - phi_p (docs/physics.md §8.1)'),
+    Variable(name='twist_2', vr=210, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad', display_unit=None, start=None, min=None, max=None, description='output-shaft twist phi_g - phi_w (docs/physics.md §8.1)'),
+    Variable(name='phi_p', vr=211, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad', display_unit=None, start=None, min=None, max=None, description='pinion angle, the phase of the mesh cycle; wrapped by whole load-share periods at events'),
+    Variable(name='governor_integral', vr=212, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad', display_unit=None, start=None, min=None, max=None, description="integral of the speed governor's wheel-speed error (load_mode = speed; else constant)"),
+    Variable(name='eta2_integral', vr=213, causality='local', variability='continuous', type='Real', enumeration=None, unit='s', display_unit=None, start=None, min=None, max=None, description='integral of eta^2 dt: eta_cycle is the RMS of eta over an averaging window from it'),
+    Variable(name='T_sump', vr=214, causality='local', variability='continuous', type='Real', enumeration=None, unit='K', display_unit=None, start=None, min=None, max=None, description='oil temperature of the sump model (thermal_model = sump; else constant at T_oil0)'),
+    Variable(name='eta_axle2_integral', vr=215, causality='local', variability='continuous', type='Real', enumeration=None, unit='s', display_unit=None, start=None, min=None, max=None, description='integral of eta_axle^2 dt: eta_axle_cycle is its RMS over an averaging window'),
+    Variable(name='T_km', vr=216, causality='local', variability='continuous', type='Real', enumeration=None, unit='N.m', display_unit=None, start=None, min=None, max=None, description='transmitted pinion torque filtered over a few mesh cycles, at which the tooth data are interpolated (docs/physics.md §10.8; constant with one torque level)'),
+    Variable(name='twist_hs', vr=217, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad', display_unit=None, start=None, min=None, max=None, description='half-shaft twist phi_w - phi_wheel (load_mode = half_shaft; else 0)'),
+    Variable(name='impulse_w', vr=218, causality='local', variability='continuous', type='Real', enumeration=None, unit='N.m.s', display_unit=None, start=None, min=None, max=None, description='impulse of the wheel-end torque, integral of T_w_out dt: T_wheel is its mean over a communication step (load_mode = half_shaft; else 0)'),
+    Variable(name='der(twist_1)', vr=219, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad/s', display_unit=None, start=None, min=None, max=None, description='time derivative of twist_1'),
+    Variable(name='der(twist_2)', vr=220, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad/s', display_unit=None, start=None, min=None, max=None, description='time derivative of twist_2'),
+    Variable(name='der(phi_p)', vr=221, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad/s', display_unit=None, start=None, min=None, max=None, description='time derivative of phi_p'),
+    Variable(name='der(DTE)', vr=222, causality='local', variability='continuous', type='Real', enumeration=None, unit='m/s', display_unit=None, start=None, min=None, max=None, description='time derivative of DTE'),
+    Variable(name='der(w_s)', vr=223, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad/s2', display_unit=None, start=None, min=None, max=None, description='time derivative of w_s'),
+    Variable(name='der(w_p)', vr=224, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad/s2', display_unit=None, start=None, min=None, max=None, description='time derivative of w_p'),
+    Variable(name='der(w_g)', vr=225, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad/s2', display_unit=None, start=None, min=None, max=None, description='time derivative of w_g'),
+    Variable(name='der(w_w)', vr=226, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad/s2', display_unit=None, start=None, min=None, max=None, description='time derivative of w_w'),
+    Variable(name='der(governor_integral)', vr=227, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad/s', display_unit=None, start=None, min=None, max=None, description='time derivative of governor_integral'),
+    Variable(name='der(E_in)', vr=228, causality='local', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='time derivative of E_in'),
+    Variable(name='der(E_out)', vr=229, causality='local', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='time derivative of E_out'),
+    Variable(name='der(E_friction)', vr=230, causality='local', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='time derivative of E_friction'),
+    Variable(name='der(E_damping)', vr=231, causality='local', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='time derivative of E_damping'),
+    Variable(name='der(E_excitation)', vr=232, causality='local', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='time derivative of E_excitation'),
+    Variable(name='der(eta2_integral)', vr=233, causality='local', variability='continuous', type='Real', enumeration=None, unit='', display_unit=None, start=None, min=None, max=None, description='time derivative of eta2_integral'),
+    Variable(name='der(T_sump)', vr=234, causality='local', variability='continuous', type='Real', enumeration=None, unit='K/s', display_unit=None, start=None, min=None, max=None, description='time derivative of T_sump'),
+    Variable(name='der(Q_housing)', vr=235, causality='local', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='time derivative of Q_housing'),
+    Variable(name='der(E_churn)', vr=236, causality='local', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='time derivative of E_churn'),
+    Variable(name='der(E_bearings)', vr=237, causality='local', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='time derivative of E_bearings'),
+    Variable(name='der(E_seals)', vr=238, causality='local', variability='continuous', type='Real', enumeration=None, unit='W', display_unit=None, start=None, min=None, max=None, description='time derivative of E_seals'),
+    Variable(name='der(eta_axle2_integral)', vr=239, causality='local', variability='continuous', type='Real', enumeration=None, unit='', display_unit=None, start=None, min=None, max=None, description='time derivative of eta_axle2_integral'),
+    Variable(name='der(T_km)', vr=240, causality='local', variability='continuous', type='Real', enumeration=None, unit='N.m/s', display_unit=None, start=None, min=None, max=None, description='time derivative of T_km'),
+    Variable(name='der(twist_hs)', vr=241, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad/s', display_unit=None, start=None, min=None, max=None, description='time derivative of twist_hs'),
+    Variable(name='der(impulse_w)', vr=242, causality='local', variability='continuous', type='Real', enumeration=None, unit='N.m', display_unit=None, start=None, min=None, max=None, description='time derivative of impulse_w'),
 )
 
 VARIABLES = {v.name: v for v in _TABLE}

@@ -1,4 +1,4 @@
-"""A thin ctypes binding of the FMU's FMI 2.0 co-simulation functions, without fmpy's checks, so
+"""A thin ctypes binding of the FMU's FMI 2.0 functions (co-simulation and Model Exchange), without fmpy's checks, so
 that tests can pass exactly what a careless host might: NULL pointers, wrong types, unknown value
 references, calls in the wrong order. Log messages are recorded as (status, category, text).
 
@@ -70,7 +70,26 @@ _SIGNATURES = {
     "fmi2GetIntegerStatus": (c_int, [c_void_p, c_int, POINTER(c_int)]),
     "fmi2GetBooleanStatus": (c_int, [c_void_p, c_int, POINTER(c_int)]),
     "fmi2GetStringStatus": (c_int, [c_void_p, c_int, POINTER(c_char_p)]),
+    # Model Exchange
+    "fmi2EnterEventMode": (c_int, [c_void_p]),
+    "fmi2NewDiscreteStates": (c_int, [c_void_p, c_void_p]),  # fmi2EventInfo *: 6 fields
+    "fmi2EnterContinuousTimeMode": (c_int, [c_void_p]),
+    "fmi2CompletedIntegratorStep": (c_int, [c_void_p, c_int, POINTER(c_int), POINTER(c_int)]),
+    "fmi2SetTime": (c_int, [c_void_p, c_double]),
+    "fmi2SetContinuousStates": (c_int, [c_void_p, POINTER(c_double), c_size_t]),
+    "fmi2GetContinuousStates": (c_int, [c_void_p, POINTER(c_double), c_size_t]),
+    "fmi2GetNominalsOfContinuousStates": (c_int, [c_void_p, POINTER(c_double), c_size_t]),
+    "fmi2GetDerivatives": (c_int, [c_void_p, POINTER(c_double), c_size_t]),
+    "fmi2GetEventIndicators": (c_int, [c_void_p, POINTER(c_double), c_size_t]),
 }
+
+
+class EventInfo(ctypes.Structure):
+    """fmi2EventInfo."""
+    _fields_ = [("newDiscreteStatesNeeded", c_int), ("terminateSimulation", c_int),
+                ("nominalsOfContinuousStatesChanged", c_int),
+                ("valuesOfContinuousStatesChanged", c_int), ("nextEventTimeDefined", c_int),
+                ("nextEventTime", c_double)]
 
 
 class Library:
@@ -132,5 +151,5 @@ def pointer_out():
 
 
 __all__ = ["Library", "Callbacks", "vr_array", "real_array", "int_array", "string_array",
-           "pointer_out", "byref", "OK", "WARNING", "DISCARD", "ERROR", "FATAL", "ME", "CS",
-           "STATUS_NAMES"]
+           "pointer_out", "byref", "EventInfo", "OK", "WARNING", "DISCARD", "ERROR", "FATAL",
+           "ME", "CS", "STATUS_NAMES"]

@@ -19,6 +19,9 @@ A case is {"id": ..., "steps": [step, ...]}; a step is a dict with "op" and argu
   log          on, cats (list or null), n
   der_in       vrs, orders, values ; der_out vrs ; dir_der
   state_get / state_set / state_free   slot name "state_slot"
+  Model Exchange: event_mode, new_states, continuous, completed (null_args), time (t),
+               states_set (values, n, null), states_get / nominals / derivatives / indicators
+               (n, null; check that they are finite), me_run (n Euler steps of h with events)
   serialize    -> keeps the bytes ; deserialize  bytes ("last" | hex), mutate [[offset, xor]], cut
   status       kind (GetStatus | GetRealStatus | GetIntegerStatus | GetBooleanStatus |
                GetStringStatus), which, null_value
@@ -199,6 +202,101 @@ class Case:
         res = {"status": r}
         if r == F.OK and kind in ("GetRealStatus", "GetStatus", "GetBooleanStatus"):
             res["value"] = value.value
+        return res
+
+    # ------------------------------------------------------------------ Model Exchange
+    def op_event_mode(self, s):
+        return {"status": self.lib.fmi2EnterEventMode(self.comp(s))}
+
+    def op_new_states(self, s):
+        info = F.EventInfo()
+        r = self.lib.fmi2NewDiscreteStates(self.comp(s), None if s.get("null") else byref(info))
+        return {"status": r, "changed": info.valuesOfContinuousStatesChanged}
+
+    def op_continuous(self, s):
+        return {"status": self.lib.fmi2EnterContinuousTimeMode(self.comp(s))}
+
+    def op_completed(self, s):
+        event, stop = c_int(), c_int()
+        null = s.get("null_args")
+        r = self.lib.fmi2CompletedIntegratorStep(self.comp(s), 1, None if null else byref(event),
+                                                 None if null else byref(stop))
+        return {"status": r, "event": event.value}
+
+    def op_time(self, s):
+        r = self.lib.fmi2SetTime(self.comp(s), s.get("t", self.t))
+        if r == F.OK:
+            self.t = s.get("t", self.t)
+        return {"status": r}
+
+    def op_states_set(self, s):
+        values = s.get("values", [0.0])
+        n = s.get("n", len(values))
+        arr = None if s.get("null") else F.real_array([float(v) for v in values], max(n, 1))
+        return {"status": self.lib.fmi2SetContinuousStates(self.comp(s), arr, n)}
+
+    def _me_array(self, s, fn):
+        n = s.get("n", s.get("size", 1))
+        arr = None if s.get("null") else (c_double * max(n, 1))()
+        r = getattr(self.lib, fn)(self.comp(s), arr, n)
+        res = {"status": r}
+        if r == F.OK and arr is not None:
+            res["values"] = [arr[i] for i in range(n)]
+            res["nonfinite"] = [(i, repr(arr[i])) for i in range(n) if not math.isfinite(arr[i])]
+        return res
+
+    def op_states_get(self, s):
+        return self._me_array(s, "fmi2GetContinuousStates")
+
+    def op_nominals(self, s):
+        return self._me_array(s, "fmi2GetNominalsOfContinuousStates")
+
+    def op_derivatives(self, s):
+        return self._me_array(s, "fmi2GetDerivatives")
+
+    def op_indicators(self, s):
+        return self._me_array(s, "fmi2GetEventIndicators")
+
+    def op_me_run(self, s):
+        """From continuous-time mode, n forward Euler steps of h, an event iteration wherever an
+        indicator changes sign or a step asks for one (enough to run a model on at 1 us)."""
+        nx, nz, h = s["nx"], s["nz"], s.get("h", 1e-6)
+        x, dx, z0, z = (c_double * nx)(), (c_double * nx)(), (c_double * nz)(), (c_double * nz)()
+        comp, lib, res = self.comp(s), self.lib, {"status": F.OK, "steps": 0, "events": 0}
+        for fn, arr, n in (("fmi2GetContinuousStates", x, nx), ("fmi2GetEventIndicators", z0, nz)):
+            res["status"] = getattr(lib, fn)(comp, arr, n)
+            if res["status"] != F.OK:
+                return res
+        for _ in range(s.get("n", 10)):
+            calls = [lambda: lib.fmi2GetDerivatives(comp, dx, nx)]
+            calls.append(lambda: lib.fmi2SetTime(comp, self.t + h))
+            calls.append(lambda: lib.fmi2SetContinuousStates(
+                comp, (c_double * nx)(*[x[i] + h * dx[i] for i in range(nx)]), nx))
+            calls.append(lambda: lib.fmi2GetContinuousStates(comp, x, nx))
+            calls.append(lambda: lib.fmi2GetEventIndicators(comp, z, nz))
+            for call in calls:
+                res["status"] = call()
+                if res["status"] != F.OK:
+                    return res
+            self.t += h
+            event, stop = c_int(), c_int()
+            res["status"] = lib.fmi2CompletedIntegratorStep(comp, 1, byref(event), byref(stop))
+            crossed = any((z0[i] > 0) != (z[i] > 0) for i in range(nz))
+            if res["status"] == F.OK and (crossed or event.value):
+                res["events"] += 1
+                info = F.EventInfo()
+                for call in (lambda: lib.fmi2EnterEventMode(comp),
+                             lambda: lib.fmi2NewDiscreteStates(comp, byref(info)),
+                             lambda: lib.fmi2EnterContinuousTimeMode(comp),
+                             lambda: lib.fmi2GetContinuousStates(comp, x, nx),
+                             lambda: lib.fmi2GetEventIndicators(comp, z, nz)):
+                    res["status"] = call()
+                    if res["status"] != F.OK:
+                        return res
+            if res["status"] != F.OK:
+                return res
+            z0[:] = z[:]
+            res["steps"] += 1
         return res
 
     # ------------------------------------------------------------------ FMU states

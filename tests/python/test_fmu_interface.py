@@ -232,7 +232,7 @@ def test_wrong_guid_and_bad_resource_uri_refuse_instantiation(unzipped, model_de
     guid = model_description.guid.encode()
     uri = (unzipped / "resources").as_uri().encode()
     assert lib.fmi2Instantiate(b"x", 1, b"{wrong}", uri, ctypes.byref(cb), 0, 0) is None
-    assert lib.fmi2Instantiate(b"x", 0, guid, uri, ctypes.byref(cb), 0, 0) is None  # ME
+    assert lib.fmi2Instantiate(b"x", 2, guid, uri, ctypes.byref(cb), 0, 0) is None  # no type
     assert lib.fmi2Instantiate(b"x", 1, guid, b"http://host/r", ctypes.byref(cb), 0, 0) is None
     assert lib.fmi2Instantiate(b"x", 1, guid, b"file:///a%zz", ctypes.byref(cb), 0, 0) is None
     assert lib.fmi2Instantiate(b"x", 1, guid, uri, None, 0, 0) is None

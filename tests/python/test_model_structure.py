@@ -46,15 +46,24 @@ def structure():
     ms = root.find("ModelStructure")
     outputs = {names[int(u.get("index")) - 1]: u.get("dependencies")
                for u in ms.find("Outputs")}
-    initial = {names[int(u.get("index")) - 1]:
-               {names[int(k) - 1] for k in u.get("dependencies").split()}
-               for u in ms.find("InitialUnknowns")}
+    initial = {names[int(u.get("index")) - 1]:  # the states and derivatives of Model Exchange
+               {names[int(k) - 1] for k in u.get("dependencies").split()}  # declare none: all
+               for u in ms.find("InitialUnknowns") if u.get("dependencies") is not None}
     return names, inputs, outputs, initial
 
 
 def test_no_output_moves_before_the_next_step(structure):
+    """Co-simulation: no output moves when an input is set (sound for whatever is declared);
+    the declaration names no parameter or other output, only inputs and the continuous states
+    (the knowns of Model Exchange, which the same ModelStructure serves:
+    test_model_exchange_outputs_move_with_the_listed_inputs_only)."""
     names, inputs, outputs, _ = structure
-    assert set(outputs.values()) == {""}
+    svs = variables(description())
+    states = {names[int(svs[int(u.get("index")) - 1].find("Real").get("derivative")) - 1]
+              for u in description().find("ModelStructure").find("Derivatives")}
+    for deps in outputs.values():
+        known = {names[int(k) - 1] for k in deps.split()}
+        assert known <= set(inputs) | states and states <= known
     for cfg in CONFIGS[:3]:
         with Instance(FMU, name="ms") as g:
             g.start({**cfg, **START})
@@ -63,6 +72,23 @@ def test_no_output_moves_before_the_next_step(structure):
             for name in inputs:
                 bump(g, name)
             assert moved(before, {n: g.get(n) for n in outputs}) == set(), cfg
+
+
+def test_model_exchange_outputs_move_with_the_listed_inputs_only(structure):
+    """Model Exchange, continuous-time mode: an input set moves only the outputs that declare
+    it (the states held)."""
+    from hypoid.fmu.exchange import ExchangeInstance
+
+    names, inputs, outputs, _ = structure
+    declared = {o: {names[int(k) - 1] for k in d.split()} for o, d in outputs.items()}
+    for cfg in CONFIGS:
+        for name in inputs:
+            with ExchangeInstance(FMU, name="ms") as g:
+                g.start({**cfg, **START})
+                before = {n: g.get(n) for n in outputs}
+                bump(g, name)
+                for o in moved(before, {n: g.get(n) for n in outputs}):
+                    assert name in declared[o], f"{name} moves {o} in Model Exchange ({cfg})"
 
 
 def test_initial_unknowns_move_with_the_listed_inputs_only(structure):

@@ -1,4 +1,4 @@
-"""Bad input through every door of the FMI 2.0 interface.
+"""Bad input through every door of the FMI 2.0 interface, co-simulation and Model Exchange.
 
 Every parameter and input (taken from the model description, not listed by hand) gets NaN, +-Inf,
 negative, zero, tiny, huge and just-out-of-range values, before and during the run; every
@@ -135,7 +135,9 @@ def fmu(request):
                               causality=v.causality, variability=v.variability, min=lo, max=hi,
                               start=v.start))
     real_vrs = [v["vr"] for v in variables if v["kind"] == "Real"]
-    return dict(so=str(so), guid=model_description.guid,
+    states = [d.variable.derivative.name for d in model_description.derivatives]
+    return dict(so=str(so), guid=model_description.guid, states=states,
+                nz=model_description.numberOfEventIndicators,
                 uri=(pathlib.Path(unzipped) / "resources").as_uri(), resources=pathlib.Path(
                     unzipped) / "resources", variables=variables, real_vrs=real_vrs,
                 n_vars=max(v["vr"] for v in variables) + 1)
@@ -886,9 +888,8 @@ def test_instantiate_arguments(fmu, tmp_path, tally):
         Case("NULL GUID", [inst(guid=None)], refused("GUID", "(null)"), target=0),
         Case("wrong GUID", [inst(guid="{0000}")], refused("GUID", "{0000}"), target=0),
         Case("empty GUID", [inst(guid="")], refused("GUID"), target=0),
-        Case("model exchange", [inst(type=F.ME)], refused("co-simulation"), target=0),
-        Case("type 7", [inst(type=7)], refused("co-simulation"), target=0),
-        Case("type -1", [inst(type=-1)], refused("co-simulation"), target=0),
+        Case("type 7", [inst(type=7)], refused("fmi2ModelExchange"), target=0),
+        Case("type -1", [inst(type=-1)], refused("fmi2ModelExchange"), target=0),
         Case("NULL callbacks", [inst(callbacks="null")], refused(), target=0, silent=True),
         Case("NULL callbacks, NULL name", [inst(callbacks="null", name=None)], refused(),
              target=0, silent=True),
@@ -1206,3 +1207,174 @@ def test_bad_serialized_states(fmu, tmp_path, tally):
                           target=len(base)))
     deser("round trip ok", then_set_and_step, judge=judge_ok)
     settle(cases, run_cases(fmu, cases, tmp_path), tally, "serialized states")
+
+
+# ---------------------------------------------------------------------------------------------
+# 9. Model Exchange: its entry points in every state of its state machine, the co-simulation
+# functions refused on a Model Exchange instance and the other way round, NULL pointers, arrays
+# of the wrong size, bad numbers for the time and the states
+
+ME_STATES = ("instantiated", "initialization", "event", "continuous", "terminated", "error")
+ME_READ = {"initialization", "event", "continuous", "terminated", "error"}
+
+
+def me_calls(fmu):
+    nx, nz = len(fmu["states"]), fmu["nz"]
+    return {  # name: (call, FMI function, states it is allowed in)
+        "event_mode": (dict(op="event_mode"), "fmi2EnterEventMode", {"continuous"}),
+        "new_states": (dict(op="new_states"), "fmi2NewDiscreteStates", {"event"}),
+        "continuous": (dict(op="continuous"), "fmi2EnterContinuousTimeMode", {"event"}),
+        "completed": (dict(op="completed"), "fmi2CompletedIntegratorStep", {"continuous"}),
+        "time": (dict(op="time", t=1e-6), "fmi2SetTime", {"event", "continuous"}),
+        "states_get": (dict(op="states_get", n=nx), "fmi2GetContinuousStates", ME_READ),
+        "states_set": (dict(op="states_set", values=[0.0] * nx), "fmi2SetContinuousStates",
+                       {"continuous"}),
+        "nominals": (dict(op="nominals", n=nx), "fmi2GetNominalsOfContinuousStates",
+                     ME_READ | {"instantiated"}),
+        "derivatives": (dict(op="derivatives", n=nx), "fmi2GetDerivatives", ME_READ),
+        "indicators": (dict(op="indicators", n=nz), "fmi2GetEventIndicators", ME_READ),
+        "terminate": (dict(op="terminate"), "fmi2Terminate", {"event", "continuous", "error"}),
+    }
+
+
+def me_reach(stage, fmu):
+    """Steps that bring a fresh Model Exchange instance to a state of its state machine."""
+    steps = [inst(type=F.ME), dict(op="setup", start=0.0)]
+    if stage == "instantiated":
+        return steps
+    steps.append(dict(op="enter"))
+    if stage == "initialization":
+        return steps
+    steps += [dict(op="exit"), dict(op="new_states")]
+    if stage == "event":
+        return steps
+    steps.append(dict(op="continuous"))
+    if stage == "continuous":
+        return steps
+    if stage == "terminated":
+        return steps + [dict(op="terminate")]
+    if stage == "error":  # a state far beyond the model's reach: its derivatives overflow
+        return steps + [dict(op="states_set", values=[1e300] * len(fmu["states"])),
+                        dict(op="derivatives", n=len(fmu["states"]))]
+    raise ValueError(stage)
+
+
+def me_run(fmu, n=200):
+    """On from continuous-time mode: Euler steps of 1 us with events, every Real read."""
+    return [dict(op="me_run", nx=len(fmu["states"]), nz=fmu["nz"], n=n),
+            dict(op="all_reals", vrs=fmu["real_vrs"])]
+
+
+def judge_error_or_ok(case, transcript):
+    """In the error state a call that is allowed may succeed or fail cleanly."""
+    return "rejected" if transcript[case.target]["status"] == F.ERROR else judge_ok(
+        case, transcript)
+
+
+def me_state_cases(fmu):
+    cases = []
+    for stage in ME_STATES:
+        for name, (call, fn, allowed) in me_calls(fmu).items():
+            steps = me_reach(stage, fmu) + [dict(call, target=True)]
+            if stage not in allowed:
+                judge = judge_error(fn, "not allowed in state")
+            else:
+                judge = judge_error_or_ok if stage == "error" else judge_ok
+            cases.append(Case(f"ME {name}@{stage}", steps, judge,
+                              target=len(me_reach(stage, fmu))))
+    # the co-simulation functions on a Model Exchange instance and the other way round
+    cont = me_reach("continuous", fmu)
+    for call, fn in ((dict(op="der_in", vrs=[0], orders=[1], values=[1.0]),
+                      "fmi2SetRealInputDerivatives"),
+                     (dict(op="der_out"), "fmi2GetRealOutputDerivatives")):
+        cases.append(Case(f"ME instance {fn}", cont + [dict(call, target=True)] + me_run(fmu),
+                          judge_error(fn, "co-simulation", then="runs"), target=len(cont)))
+    cases.append(Case("ME instance fmi2DoStep", cont + [dict(op="step", h=1e-4, target=True)],
+                      judge_error("fmi2DoStep", "not allowed"), target=len(cont)))
+    cs = reach("initialization")
+    for name, (call, fn, _) in me_calls(fmu).items():
+        if name in ("terminate",):
+            continue
+        cases.append(Case(f"CS instance {fn}", cs + [dict(call, target=True)] + finish(
+            "initialization", fmu), judge_error(fn), target=len(cs)))
+    return cases
+
+
+def me_argument_cases(fmu):
+    nx, nz, cases = len(fmu["states"]), fmu["nz"], []
+    cont = me_reach("continuous", fmu)
+    at = len(cont)
+
+    def case(label, call, judge, then=None):
+        cases.append(Case(label, cont + [dict(call, target=True)] + (
+            me_run(fmu) if then is None else then), judge, target=at))
+
+    start = [1.0] * nx  # replaced by the real state below
+    for op, fn, n_model in (("states_get", "fmi2GetContinuousStates", nx),
+                            ("nominals", "fmi2GetNominalsOfContinuousStates", nx),
+                            ("derivatives", "fmi2GetDerivatives", nx),
+                            ("indicators", "fmi2GetEventIndicators", nz)):
+        case(f"{fn} NULL", dict(op=op, n=n_model, null=True), judge_error(fn, "NULL", then="runs"))
+        for n in (0, n_model - 1, n_model + 1):
+            case(f"{fn} n={n}", dict(op=op, n=n), judge_error(fn, f"{n} ", str(n_model),
+                                                              then="runs"))
+    case("fmi2SetContinuousStates NULL", dict(op="states_set", values=start, null=True),
+         judge_error("fmi2SetContinuousStates", "NULL", then="runs"))
+    for n in (0, nx - 1, nx + 1):
+        case(f"fmi2SetContinuousStates n={n}", dict(op="states_set", values=start[:max(n, 1)]
+                                                    + [1.0] * max(n - nx, 0), n=n),
+             judge_error("fmi2SetContinuousStates", str(nx), then="runs"))
+    for k in sorted({0, 3, 5, nx - 1}):
+        for bad in (math.nan, math.inf, -math.inf):
+            values = [0.0] * nx
+            values[k] = bad
+            case(f"state {fmu['states'][k]}={bad!r}", dict(op="states_set", values=values),
+                 judge_error("fmi2SetContinuousStates", fmu["states"][k], value=bad,
+                             then="runs"))
+    for bad in (math.nan, math.inf, -math.inf, -1.0):
+        case(f"fmi2SetTime {bad!r}", dict(op="time", t=bad),
+             judge_error("fmi2SetTime", value=bad, then="runs"))
+    case("fmi2CompletedIntegratorStep NULL", dict(op="completed", null_args=True),
+         judge_error("fmi2CompletedIntegratorStep", "NULL", then="runs"))
+    ev = me_reach("event", fmu)
+    cases.append(Case("fmi2NewDiscreteStates NULL", ev + [dict(op="new_states", null=True,
+                                                               target=True)],
+                      judge_error("fmi2NewDiscreteStates", "NULL"), target=len(ev)))
+    # an absurd state: the derivatives overflow; a clean error naming one, the instance freed
+    case("state 1e300 everywhere", dict(op="states_set", values=[1e300] * nx), judge_ok,
+         then=[dict(op="derivatives", n=nx), dict(op="terminate")])
+    cases[-1].judge = lambda c, tr: judge_error("fmi2GetDerivatives", "der(")(
+        dataclasses.replace(c, target=c.target + 1), tr)
+    # variables: unknown references, a state that is not settable, inputs good and bad
+    real_in = next(v for v in fmu["variables"] if v["name"] == "T_s")
+    state = next(v for v in fmu["variables"] if v["name"] == fmu["states"][0])
+    case("unknown value reference in ME", dict(op="get", kind="Real", vrs=[fmu["n_vars"]]),
+         judge_error("unknown value reference", str(fmu["n_vars"]), then="runs"))
+    case("set a state by fmi2SetReal", dict(op="set", kind="Real", vrs=[state["vr"]],
+                                            values=[0.0]),
+         judge_error(state["name"], "cannot be set", then="runs"))
+    for value in (math.nan, math.inf, 1e300, -1e300):
+        case(f"input T_s={value!r} in continuous-time mode", set_step(real_in, value),
+             judge_value(real_in, value))
+    case("input T_s=150 in continuous-time mode", set_step(real_in, 150.0),
+         judge_value(real_in, 150.0))
+    # NULL instance to every Model Exchange function; then a fresh run goes on
+    for name, (call, fn, _) in me_calls(fmu).items():
+        steps = cont + [dict(call, comp="NULL", target=True)] + me_run(fmu, n=20)
+        cases.append(Case(f"NULL instance {fn}", steps, judge_error(then="runs"), target=at))
+    # an FMU state of one interface into an instance of the other
+    cases.append(Case("ME state into a CS instance", cont + [
+        dict(op="state_get"), inst(slot="b"), dict(op="setup", slot="b"),
+        dict(op="state_set", slot="b", target=True)],
+        judge_error("fmi2SetFMUstate", "Model Exchange"), target=at + 3))
+    cases.append(Case("ME state restored runs", cont + me_run(fmu, n=50) + [
+        dict(op="state_get"), dict(op="me_run", nx=nx, nz=nz, n=50), dict(op="state_set",
+                                                                          target=True)]
+        + me_run(fmu, n=50), judge_error_free, target=at + 4))
+    return cases
+
+
+def test_model_exchange_entry_points(fmu, tmp_path, tally):
+    cases = me_state_cases(fmu) + me_argument_cases(fmu)
+    assert len(cases) > 100
+    settle(cases, run_cases(fmu, cases, tmp_path), tally, "Model Exchange")

@@ -1,0 +1,112 @@
+"""The gear FMU in Model Exchange: one binary and one modelDescription.xml with both interfaces,
+the host integrating the model's states. Against co-simulation in two of the work-precision scenes
+(bench/me_vs_cs.py runs all five), through fmpy's simulate_fmu (CVode) and through
+hypoid.fmu.exchange; FMU states, serialization and reset in Model Exchange. The bad-input suite
+(test_robustness_inputs.py, section 9) covers the entry points' arguments and states.
+
+About 10 s."""
+
+import numpy as np
+import pytest
+from fmpy import simulate_fmu
+
+from hypoid.fmu.exchange import ExchangeInstance
+from hypoid.fmu.instance import Instance
+from hypoid.fmu.values import RPM
+
+# The model's state vector (fmu-src/model/dynamics.h), the order of fmi2GetContinuousStates.
+STATES = ["twist_1", "twist_2", "phi_p", "DTE", "w_s", "w_p", "w_g", "w_w", "governor_integral",
+          "E_in", "E_out", "E_friction", "E_damping", "E_excitation", "eta2_integral", "T_sump",
+          "Q_housing", "E_churn", "E_bearings", "E_seals", "eta_axle2_integral", "T_km", "twist_hs",
+          "impulse_w"]
+NAMES = ["w_p", "DTE", "eta", "eta_cycle", "P_loss"]
+
+
+def test_one_model_description_declares_both_interfaces(model_description):
+    md = model_description
+    assert md.modelExchange.modelIdentifier == md.coSimulation.modelIdentifier == "HypoidGearPair"
+    me = md.modelExchange
+    assert me.canGetAndSetFMUstate and me.canSerializeFMUstate
+    assert not me.completedIntegratorStepNotNeeded  # the friction tables' key asks for events
+    assert md.numberOfContinuousStates == len(STATES)
+    assert md.numberOfEventIndicators == 4  # the two contact edges, the window's two ends
+    assert [d.variable.derivative.name for d in md.derivatives] == STATES
+    for d in md.derivatives:
+        state = d.variable.derivative
+        assert d.variable.name == f"der({state.name})" and d.variable.causality == "local"
+        assert state.causality in ("output", "local") and state.variability == "continuous"
+
+
+def run_both(fmu, values, stop_time, interval, names=NAMES):
+    """The scene in Model Exchange (fmpy's CVode at the FMU's rtol, 1e-6) and co-simulation."""
+    kw = dict(start_values=values, output=names, stop_time=stop_time, output_interval=interval)
+    me = simulate_fmu(str(fmu), fmi_type="ModelExchange", relative_tolerance=1e-6,
+                      record_events=False, **kw)
+    return me, simulate_fmu(str(fmu), fmi_type="CoSimulation", **kw)
+
+
+def test_design_point_agrees_with_co_simulation(fmu_path):
+    """2000 rpm, 100 N.m, 40 degC to the end of the first averaging window: eta_cycle within
+    1e-4 (it agrees to 1e-9), w_p within 1e-4 of itself at every output point; both are within
+    their tolerance of a BDF rtol 1e-10 run (bench/me_vs_cs.py)."""
+    me, cs = run_both(fmu_path, {}, 0.3, 1e-3)
+    assert me["eta_cycle"][-1] < 1.0, "the averaging window must have closed"
+    assert abs(me["eta_cycle"][-1] - cs["eta_cycle"][-1]) < 1e-4
+    assert np.max(np.abs(me["w_p"] - cs["w_p"]) / cs["w_p"]) < 1e-4
+    assert np.max(np.abs(me["DTE"] - cs["DTE"])) < 1e-7  # 0.1 um of a DTE of ~80 um
+
+
+def test_tooth_separation_events_agree_with_co_simulation(fmu_path):
+    """The resonance scene of the work-precision benchmark (2300 rpm, 50 N.m, frictionless: the
+    teeth come apart each mesh cycle): the host finds every contact change on the backlash's
+    event indicators, and the motion matches co-simulation's."""
+    w = 2300 * RPM
+    values = dict(T_s=50.0, w_set=w, w_p0=w, friction_model=1)
+    me, cs = run_both(fmu_path, values, 0.12, 2e-5, NAMES + ["n_impacts", "contact"])
+    late = me["time"] > 0.06
+    assert cs["n_impacts"][-1] > 100
+    assert abs(me["n_impacts"][-1] - cs["n_impacts"][-1]) <= 0.02 * cs["n_impacts"][-1]
+    assert np.mean(me["contact"][late] == 0) > 0.1  # apart a good part of the time
+    dte = [r["DTE"][late] for r in (me, cs)]
+    assert abs(np.ptp(dte[0]) - np.ptp(dte[1])) < 0.02 * np.ptp(dte[1])
+    assert abs(np.mean(me["w_p"][late]) - np.mean(cs["w_p"][late])) < 1e-4 * w
+
+
+def test_states_serialization_and_reset(fmu_path):
+    """A restored FMU state, one deserialized into another instance and a reset instance all
+    continue bit-identically: the snapshot holds the model's contact mode, window, friction-table
+    key and warm starts besides the host's states."""
+    a = ExchangeInstance(fmu_path, name="a").start()
+    first = a.integrate(0.02, 1e-3, NAMES)
+    x_saved = a.states()
+    state = a.slave.getFMUstate()
+    blob = a.slave.serializeFMUstate(state)
+    on = a.integrate(0.04, 1e-3, NAMES)
+    a.slave.setFMUstate(state)
+    a.t = 0.02
+    assert np.array_equal(a.states(), x_saved)
+    again = a.integrate(0.04, 1e-3, NAMES)
+    assert np.array_equal(on.view(np.float64), again.view(np.float64))
+    b = ExchangeInstance(fmu_path, name="b").start()
+    b.slave.setFMUstate(b.slave.deSerializeFMUstate(blob))
+    b.t = 0.02
+    assert np.array_equal(on.view(np.float64), b.integrate(0.04, 1e-3, NAMES).view(np.float64))
+    a.start()  # fmi2Reset and a new start
+    assert np.array_equal(first.view(np.float64), a.integrate(0.02, 1e-3, NAMES).view(np.float64))
+    a.slave.freeFMUstate(state)
+    for inst in (a, b):
+        inst.close()
+
+
+def test_states_and_derivatives_are_readable_variables(fmu_path):
+    """The state vector and its derivatives as variables (fmi2GetReal), in either interface."""
+    me = ExchangeInstance(fmu_path).start()
+    x, dx = me.states(), me.derivatives()
+    assert np.array_equal(me.reals(STATES), x)
+    assert np.array_equal(me.reals([f"der({s})" for s in STATES]), dx)
+    assert dx[STATES.index("phi_p")] == x[STATES.index("w_p")]
+    assert np.all(me.nominals() > 0)
+    cs = Instance(fmu_path).start()
+    assert np.array_equal(cs.reals(STATES), x)  # the same start in co-simulation
+    for inst in (me, cs):
+        inst.close()
