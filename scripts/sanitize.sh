@@ -4,8 +4,9 @@
 #   1. the C unit tests (ctest), leak detection on;
 #   2. the C host tests/host/run_fmu.c, built with the sanitizers, against the sanitized FMU:
 #      simulate 0.1 s with state save / serialize / restore / reset, 4 instances on 4 threads,
-#      200 instantiate-simulate-free cycles and 20 with dlopen/dlclose - leak detection on, so a
-#      leak in the FMU fails the run;
+#      200 instantiate-simulate-free cycles and 20 with dlopen/dlclose, and the first two again in
+#      Model Exchange (the host's Euler steps, events, states) - leak detection on, so a leak in
+#      the FMU fails the run;
 #   3. fmpy simulating the sanitized FMU in Python (libasan preloaded; leak detection off there,
 #      because the Python interpreter's own allocations would count - the C host covers leaks),
 #      and every bad-input case of tests/python/test_robustness_inputs.py against it
@@ -40,6 +41,8 @@ build-asan/run_fmu build-asan/fmu simulate 0.1
 build-asan/run_fmu build-asan/fmu threads 4 0.02
 build-asan/run_fmu build-asan/fmu soak 200 norss
 build-asan/run_fmu build-asan/fmu soak 20 reload norss
+build-asan/run_fmu build-asan/fmu simulate 0.01 me
+build-asan/run_fmu build-asan/fmu threads 3 0.005 me
 
 echo "sanitize: fmpy in Python with libasan preloaded (leaks not checked in Python)"
 libasan=$(cc -print-file-name=libasan.so)
@@ -51,6 +54,11 @@ r = simulate_fmu("build-asan/HypoidGearPair.fmu", stop_time=0.05, output_interva
                  start_values={"T_s": 120.0}, output=["w_p", "DTE", "eta"])
 assert np.all(np.isfinite(r["w_p"])) and len(r) > 400, r
 print(f"sanitize: fmpy simulated {len(r)} points, w_p(end) = {r['w_p'][-1]:.3f} rad/s")
+r = simulate_fmu("build-asan/HypoidGearPair.fmu", fmi_type="ModelExchange", stop_time=0.02,
+                 output_interval=1e-4, relative_tolerance=1e-6, output=["w_p", "DTE", "eta"])
+assert np.all(np.isfinite(r["w_p"])) and len(r) > 150, r
+print(f"sanitize: fmpy's CVode on Model Exchange, {len(r)} points, w_p(end) = "
+      f"{r['w_p'][-1]:.3f} rad/s")
 PY
 if [ "${SANITIZE_ROBUSTNESS:-1}" != 0 ]; then
   HG_ROBUSTNESS_FMU_DIR="$PWD/build-asan/fmu" LD_PRELOAD="$libasan" \

@@ -6,7 +6,8 @@
 #   threads: 4 instances with different parameters on 4 threads (0.1 s each, twice) bit-identical
 #         to each run alone, fmi2Reset on each thread reproducing its run;
 #   simulate: state save / serialize / restore in another instance / reset / fresh instance,
-#         all bit-identical.
+#         all bit-identical;
+#   both again in Model Exchange (the host's Euler steps of 1 us, events, FMU states).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -19,3 +20,5 @@ build/run_fmu build/fmu soak "$cycles"
 build/run_fmu build/fmu soak $((cycles / 10)) reload
 build/run_fmu build/fmu threads 4 0.1
 build/run_fmu build/fmu simulate 0.1
+build/run_fmu build/fmu threads 4 0.02 me
+build/run_fmu build/fmu simulate 0.05 me

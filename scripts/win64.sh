@@ -87,6 +87,9 @@ check_dll() {
   bad=$(grep -v "^$prefix" <<<"$exports" || true)
   [ -z "$bad" ] || { echo "win64: FAILED - exports that are not $prefix*: $bad" >&2; exit 1; }
   [ "$(wc -w <<<"$exports")" -ge 30 ] || { echo "win64: FAILED - too few exports" >&2; exit 1; }
+  for fn in ${3:-}; do # the entry points this DLL must export
+    grep -qx "$fn" <<<"$exports" || { echo "win64: FAILED - $fn is not exported" >&2; exit 1; }
+  done
   bad=$(grep -viE '^(KERNEL32|msvcrt)\.dll$' <<<"$imports" || true)
   [ -z "$bad" ] || { echo "win64: FAILED - imports other than KERNEL32/msvcrt: $bad" >&2; exit 1; }
 }
@@ -105,12 +108,16 @@ run_tests() {
   rm -rf "$dir" && python3 -m zipfile -e "$fmu" "$dir"
   [ -f "$dir/binaries/win64/HypoidGearPair.dll" ] \
     || { echo "win64: FAILED - $fmu has no binaries/win64/HypoidGearPair.dll" >&2; exit 1; }
-  check_dll "$dir/binaries/win64/HypoidGearPair.dll" 'fmi[23]'
+  check_dll "$dir/binaries/win64/HypoidGearPair.dll" 'fmi[23]' "fmi2EnterEventMode
+    fmi2NewDiscreteStates fmi2EnterContinuousTimeMode fmi2CompletedIntegratorStep fmi2SetTime
+    fmi2SetContinuousStates fmi2GetContinuousStates fmi2GetNominalsOfContinuousStates
+    fmi2GetDerivatives fmi2GetEventIndicators"
   [ -d "$WINEPREFIX" ] || { echo "win64: creating the Wine prefix $WINEPREFIX" >&2; $wine wineboot -i >/dev/null 2>&1; }
   ctest --test-dir "$win" --output-on-failure -j"$(nproc)" | tail -3
   # the C host: instantiate, initialise, a run with a state saved, serialized and restored
   # (resource URI file:///Z:/..., a drive letter)
   $wine "$win/run_fmu.exe" "Z:${dir//\//\\}" simulate 0.1
+  $wine "$win/run_fmu.exe" "Z:${dir//\//\\}" simulate 0.01 me
   # a folder name that is not ASCII: the URI carries UTF-8, the FMU opens its files through UTF-16
   local odd="$win/fmu-Zürich"
   rm -rf "$odd" && cp -r "$dir" "$odd"

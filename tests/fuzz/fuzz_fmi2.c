@@ -1,17 +1,20 @@
 /* libFuzzer target for the FMI 2.0 interface of the FMU, linked statically with the FMU sources
  * (all built with AddressSanitizer + UndefinedBehaviorSanitizer).
  *
- * The input is a little program: a first byte choosing how to instantiate, then operations, each
+ * The input is a little program: a first byte choosing how to instantiate (co-simulation or
+ * Model Exchange), then operations, each
  * an opcode byte and its arguments taken from the following bytes: fmi2Set/fmi2Get on any value
  * reference (known or not) with raw or typical values, data files written from the input and
  * named in gear_set_file / lubricant_file, SetupExperiment, Enter/Exit, DoStep with good and bad
  * times, FMU states (get, set, free, serialize, deserialize raw or mutated bytes), Reset,
  * Terminate, logging categories, input derivatives, status queries, NULL arrays, a second
- * instance, free and instantiate again.
+ * instance, free and instantiate again; Model Exchange's modes, time, states (set from the
+ * input, of the right or a wrong count), derivatives, event indicators, nominals, completed
+ * integrator steps and explicit Euler steps of the host.
  *
  * Beyond the sanitizers, two properties of the interface abort the run (and so are findings):
- * a call returning fmi2Error without a log message, and fmi2GetReal returning fmi2OK with a
- * value that is not finite. The logger formats each message as printf would, so an unescaped
+ * a call returning fmi2Error without a log message, and fmi2GetReal or fmi2GetDerivatives
+ * returning fmi2OK with a value that is not finite. The logger formats each message as printf would, so an unescaped
  * '%' in a message is caught too.
  *
  * Input derivatives are clamped to +-1e8: a larger ramp is refused only when it leaves an input's
@@ -168,8 +171,9 @@ static void open_slot(slot *s, input *in)
     if (!s->has_logger) s->cb.logger = NULL;
     if ((how >> 1) % 8 >= 6) uri = uris[((how >> 1) % 8 + (how >> 4)) % 6];
     snprintf(name, sizeof name, "fuzz%u", how);
-    s->c = fmi2Instantiate(how == 255 ? "" : name, fmi2CoSimulation, HG_GUID, uri, &s->cb,
-                           fmi2False, (how >> 7) & 1);
+    s->c = fmi2Instantiate(how == 255 ? "" : name,
+                           (how >> 6) & 1 ? fmi2ModelExchange : fmi2CoSimulation, HG_GUID, uri,
+                           &s->cb, fmi2False, (how >> 7) & 1);
     s->t = 0.0;
 }
 
@@ -189,6 +193,7 @@ typedef struct {
     char *blob;
     size_t blob_size;
     int steps;
+    int euler_steps; /* of the Model Exchange host */
 } session;
 
 static fmi2Status set_one(slot *s, input *in)
@@ -404,11 +409,107 @@ static fmi2Status misc_op(slot *s, input *in)
     }
 }
 
+/* ------------------------------------------------------------------ Model Exchange */
+
+/* A count of the model's (n_model) most of the time, a wrong one otherwise. */
+static size_t count_of(input *in, size_t n_model)
+{
+    unsigned k = u8(in);
+    return k < 224 ? n_model : k < 240 ? k % (n_model + 2) : (size_t)u32(in);
+}
+
+static void require_finite(const char *fn, const double *a, size_t n)
+{
+    size_t k;
+    for (k = 0; k < n; k++)
+        if (!isfinite(a[k])) {
+            fprintf(stderr, "fuzz_fmi2: %s gave %g at %zu\n", fn, a[k], k);
+            abort();
+        }
+}
+
+/* Reads one of the model's arrays (a count of the right size or not, NULL sometimes). */
+static fmi2Status me_read(slot *s, input *in, unsigned which)
+{
+    double a[HG_NUM_STATES + 8];
+    size_t n_model = which == 1 ? HG_NUM_EVENT_INDICATORS : HG_NUM_STATES;
+    size_t n = count_of(in, n_model);
+    double *p = u8(in) < 8 ? NULL : a;
+    fmi2Status st;
+    if (n > HG_NUM_STATES + 8 && p) n = HG_NUM_STATES + 8; /* the buffer's, still wrong */
+    st = which == 0   ? fmi2GetDerivatives(s->c, p, n)
+         : which == 1 ? fmi2GetEventIndicators(s->c, p, n)
+         : which == 2 ? fmi2GetNominalsOfContinuousStates(s->c, p, n)
+                      : fmi2GetContinuousStates(s->c, p, n);
+    if (st == fmi2OK && p) require_finite("a Model Exchange getter", p, n);
+    return st;
+}
+
+/* The current states with one of them replaced by a value of the input, set again. */
+static fmi2Status me_set_states(slot *s, input *in)
+{
+    double x[HG_NUM_STATES + 8] = {0};
+    size_t n = count_of(in, HG_NUM_STATES);
+    unsigned k = u8(in) % HG_NUM_STATES;
+    if (n > HG_NUM_STATES + 8) n = HG_NUM_STATES + 8;
+    fmi2GetContinuousStates(s->c, x, HG_NUM_STATES); /* may fail: then zeros */
+    if (u8(in) < 128) x[k] = value(in);
+    return fmi2SetContinuousStates(s->c, u8(in) < 8 ? NULL : x, n);
+}
+
+/* An explicit Euler step of the host: x += h dx, t += h, and the completed step. */
+static fmi2Status me_euler(session *ss, slot *s, input *in)
+{
+    static const double hs[] = {1e-6, 1e-6, 2e-6, 5e-7, 1e-5, 1e-4};
+    double x[HG_NUM_STATES], dx[HG_NUM_STATES], h = hs[u8(in) % 6];
+    fmi2Boolean event, stop;
+    fmi2Status st;
+    size_t k;
+    if (ss->euler_steps++ >= 16 * MAX_STEPS) return fmi2OK;
+    if ((st = fmi2GetContinuousStates(s->c, x, HG_NUM_STATES)) != fmi2OK ||
+        (st = fmi2GetDerivatives(s->c, dx, HG_NUM_STATES)) != fmi2OK)
+        return st;
+    require_finite("fmi2GetDerivatives", dx, HG_NUM_STATES);
+    for (k = 0; k < HG_NUM_STATES; k++) x[k] += h * dx[k];
+    if ((st = fmi2SetTime(s->c, s->t + h)) != fmi2OK) return st;
+    s->t += h;
+    if ((st = fmi2SetContinuousStates(s->c, x, HG_NUM_STATES)) != fmi2OK) return st;
+    return fmi2CompletedIntegratorStep(s->c, fmi2True, &event, &stop);
+}
+
+static fmi2Status me_op(session *ss, slot *s, input *in)
+{
+    unsigned op = u8(in) % 12;
+    switch (op) {
+    case 0: return fmi2EnterEventMode(s->c);
+    case 1: {
+        fmi2EventInfo info;
+        return fmi2NewDiscreteStates(s->c, u8(in) < 16 ? NULL : &info);
+    }
+    case 2: return fmi2EnterContinuousTimeMode(s->c);
+    case 3: {
+        fmi2Boolean event, stop;
+        int null = u8(in) < 16;
+        return fmi2CompletedIntegratorStep(s->c, fmi2True, null ? NULL : &event,
+                                           null ? NULL : &stop);
+    }
+    case 4: {
+        double t = u8(in) < 200 ? s->t + 1e-6 : value(in);
+        fmi2Status st = fmi2SetTime(s->c, t);
+        if (st == fmi2OK) s->t = t;
+        return st;
+    }
+    case 5: return me_set_states(s, in);
+    case 6: case 7: case 8: case 9: return me_read(s, in, op - 6);
+    default: return me_euler(ss, s, in);
+    }
+}
+
 static void run(session *ss, input *in)
 {
     while (in->p < in->end) {
         slot *s = &ss->inst[ss->cur];
-        unsigned op = u8(in) % 16;
+        unsigned op = u8(in) % 19;
         long before = s->log.messages;
         fmi2Status st = fmi2OK;
         if (!s->c && op != 14) continue;
@@ -430,6 +531,7 @@ static void run(session *ss, input *in)
         case 11: st = fmi2Reset(s->c); s->t = 0.0; break;
         case 12: st = fmi2Terminate(s->c); break;
         case 13: st = misc_op(s, in); break;
+        case 16: case 17: case 18: st = me_op(ss, s, in); break;
         case 14: /* free (forgetting its states) and instantiate again */
             if (ss->state_owner[0] == s->c) free_state(ss, 0);
             if (ss->state_owner[1] == s->c) free_state(ss, 1);
@@ -549,6 +651,22 @@ static int write_seeds(const char *dir)
     init_ops(&s);
     op(&s, 8, 7, 0, 12, 2, 0, 0, 11, 14);
     write_seed(dir, "order", &s);
+    /* Model Exchange: initial event, continuous-time mode, Euler steps, an event, states */
+    s.n = 0;
+    op(&s, 2, 64, 64);
+    init_ops(&s);
+    op(&s, 5, 16, 1, 200, 16, 2);
+    for (k = 0; k < 8; k++) op(&s, 3, 16, 10, 0);
+    op(&s, 4, 16, 7, 0, 200);            /* event indicators */
+    op(&s, 7, 16, 0, 16, 1, 200, 16, 2); /* event mode, new discrete states, continuous */
+    op(&s, 4, 16, 6, 0, 200);            /* derivatives */
+    op(&s, 7, 16, 5, 0, 3, 0, 0, 200);   /* a state set */
+    op(&s, 3, 9, 0, 0);                  /* FMU state get */
+    op(&s, 3, 16, 10, 0);                /* Euler step */
+    op(&s, 3, 9, 1, 0);                  /* FMU state set */
+    op(&s, 3, 16, 10, 0);
+    op(&s, 4, 2, 0, 0, 0);               /* every Real */
+    write_seed(dir, "model_exchange", &s);
     file_seed(dir, "gearset_file", "gearsets/gearset1.txt", 0);
     file_seed(dir, "lubricant_file", "lubricants/OS265962.txt", 1);
     return 0;

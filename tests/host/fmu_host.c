@@ -118,8 +118,20 @@ int host_load(fmu_lib *f, const char *so_path)
         SYM(do_step, "fmi2DoStep") && SYM(get_state, "fmi2GetFMUstate") &&
         SYM(set_state, "fmi2SetFMUstate") && SYM(free_state, "fmi2FreeFMUstate") &&
         SYM(state_size, "fmi2SerializedFMUstateSize") &&
-        SYM(serialize, "fmi2SerializeFMUstate") && SYM(deserialize, "fmi2DeSerializeFMUstate"))
+        SYM(serialize, "fmi2SerializeFMUstate") && SYM(deserialize, "fmi2DeSerializeFMUstate")) {
+#define ME_SYM(field, name) (*(void **)&f->field = lib_symbol(f->so, name))
+        ME_SYM(enter_event_mode, "fmi2EnterEventMode");
+        ME_SYM(new_discrete_states, "fmi2NewDiscreteStates");
+        ME_SYM(enter_continuous_time_mode, "fmi2EnterContinuousTimeMode");
+        ME_SYM(completed_integrator_step, "fmi2CompletedIntegratorStep");
+        ME_SYM(set_time, "fmi2SetTime");
+        ME_SYM(set_continuous_states, "fmi2SetContinuousStates");
+        ME_SYM(get_continuous_states, "fmi2GetContinuousStates");
+        ME_SYM(get_derivatives, "fmi2GetDerivatives");
+        ME_SYM(get_event_indicators, "fmi2GetEventIndicators");
+#undef ME_SYM
         return 0;
+    }
 #undef SYM
     lib_close(f->so);
     return -1;
@@ -219,6 +231,16 @@ int host_read_info(fmu_info *m, const char *dir)
         fprintf(stderr, "fmu_host: no resources folder in %s\n", dir);
         return -1;
     }
+    if ((p = strstr(m->xml, "<Derivatives>")) != NULL) {
+        const char *end = strstr(p, "</Derivatives>");
+        for (; (p = strstr(p + 1, "<Unknown ")) != NULL && end && p < end;) m->nx++;
+    }
+    if (!attribute(m->xml, "numberOfEventIndicators", id, sizeof id))
+        m->nz = (size_t)strtoul(id, NULL, 10);
+    if (m->nx > HOST_MAX_STATES || m->nz > HOST_MAX_STATES) {
+        fprintf(stderr, "fmu_host: more than %d states or event indicators\n", HOST_MAX_STATES);
+        return -1;
+    }
     for (p = m->xml; (p = strstr(p, "<ScalarVariable ")) != NULL; p++) {
         const char *close = strstr(p, "</ScalarVariable>"), *real = strstr(p, "<Real");
         char vr[32];
@@ -255,15 +277,23 @@ static void logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status sta
 
 int host_open(instance *in, const fmu_lib *f, const fmu_info *m, const char *name)
 {
+    return host_open_as(in, f, m, name, 0);
+}
+
+int host_open_as(instance *in, const fmu_lib *f, const fmu_info *m, const char *name,
+                 int model_exchange)
+{
     memset(in, 0, sizeof *in);
+    in->model_exchange = model_exchange;
+    if (model_exchange && !(f->get_derivatives && m->nx)) return host_fail("no Model Exchange");
     in->f = f;
     in->m = m;
     in->cb.logger = logger;
     in->cb.allocateMemory = calloc;
     in->cb.freeMemory = free;
     in->cb.componentEnvironment = &in->log;
-    in->c = f->instantiate(name, fmi2CoSimulation, m->guid, m->resource_uri, &in->cb, fmi2False,
-                           fmi2False);
+    in->c = f->instantiate(name, model_exchange ? fmi2ModelExchange : fmi2CoSimulation, m->guid,
+                           m->resource_uri, &in->cb, fmi2False, fmi2False);
     return in->c ? 0 : host_fail("fmi2Instantiate");
 }
 

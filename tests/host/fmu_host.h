@@ -1,6 +1,6 @@
-/* The parts of a small FMI 2.0 co-simulation host in C shared by the test host
- * (tests/host/run_fmu.c) and the benchmark host (bench/bench_fmu.c): dlopen an unzipped FMU,
- * read what the host needs from its modelDescription.xml, instantiate it with a logger that
+/* The parts of a small FMI 2.0 host in C shared by the test host (tests/host/run_fmu.c) and the
+ * benchmark host (bench/bench_fmu.c): dlopen an unzipped FMU, read what the host needs from its
+ * modelDescription.xml, instantiate it (co-simulation or Model Exchange) with a logger that
  * counts errors, and set variables by name. */
 #ifndef HG_FMU_HOST_H
 #define HG_FMU_HOST_H
@@ -14,6 +14,7 @@
 #define PATH_MAX 4096
 #endif
 #define HOST_MAX_REALS 1024
+#define HOST_MAX_STATES 64 /* continuous states and event indicators (Model Exchange) */
 
 /* The FMU's functions. */
 typedef struct {
@@ -39,6 +40,16 @@ typedef struct {
     fmi2SerializedFMUstateSizeTYPE *state_size;
     fmi2SerializeFMUstateTYPE *serialize;
     fmi2DeSerializeFMUstateTYPE *deserialize;
+    /* Model Exchange (NULL when the FMU has none) */
+    fmi2EnterEventModeTYPE *enter_event_mode;
+    fmi2NewDiscreteStatesTYPE *new_discrete_states;
+    fmi2EnterContinuousTimeModeTYPE *enter_continuous_time_mode;
+    fmi2CompletedIntegratorStepTYPE *completed_integrator_step;
+    fmi2SetTimeTYPE *set_time;
+    fmi2SetContinuousStatesTYPE *set_continuous_states;
+    fmi2GetContinuousStatesTYPE *get_continuous_states;
+    fmi2GetDerivativesTYPE *get_derivatives;
+    fmi2GetEventIndicatorsTYPE *get_event_indicators;
 } fmu_lib;
 
 /* What the host reads from the model description. */
@@ -48,6 +59,7 @@ typedef struct {
     char *resource_uri;
     fmi2ValueReference reals[HOST_MAX_REALS]; /* every Real variable */
     size_t n_reals;
+    size_t nx, nz; /* continuous states and event indicators (Model Exchange) */
     char *xml;
 } fmu_info;
 
@@ -61,6 +73,7 @@ typedef struct {
     fmi2CallbackFunctions cb;
     log_env log;
     fmi2Component c;
+    int model_exchange; /* instantiated as fmi2ModelExchange */
 } instance;
 
 /* Prints "<prog>: FAILED: what" and returns -1. */
@@ -79,6 +92,9 @@ long host_value_reference(const fmu_info *m, const char *name);
 /* fmi2Instantiate with a logger that prints errors (everything with RUN_FMU_VERBOSE set) and
  * counts them in in->log.errors. */
 int host_open(instance *in, const fmu_lib *f, const fmu_info *m, const char *name);
+/* The same for co-simulation (model_exchange 0) or Model Exchange (1). */
+int host_open_as(instance *in, const fmu_lib *f, const fmu_info *m, const char *name,
+                 int model_exchange);
 void host_close(instance *in);
 
 int host_set_int(instance *in, const char *name, int value);

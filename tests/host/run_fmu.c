@@ -19,6 +19,11 @@
  *                                         (T s each, default 0.1),
  *                                         twice, against each run alone: bit-identical; each
  *                                         thread also resets and reruns its instance
+ *   ... simulate|threads|outputs ... me   the same in Model Exchange: the host integrates each
+ *                                         interval of 1e-4 s by explicit Euler steps of 1 us
+ *                                         (the gear's stiffest mode allows them) with an event
+ *                                         iteration wherever an event indicator changes sign or
+ *                                         a completed step asks for one
  *
  * FMU_DIR is an unzipped FMU (modelDescription.xml, binaries/linux64/<id>.so or, built for
  * Windows, binaries/win64/<id>.dll, resources/).
@@ -40,9 +45,12 @@
 
 /* ------------------------------------------------------------------ one simulation */
 
+#define ME_H 1e-6 /* the Model Exchange host's Euler step [s] */
+
 typedef struct {
     double T_s, w_set;
     int gear_set, friction_model, load_mode; /* 0: leave the start value */
+    int model_exchange;                      /* the instance is driven as Model Exchange */
 } run_spec;
 
 static int fail(const char *what)
@@ -57,16 +65,79 @@ static int set_int(instance *in, const char *name, int value)
     return value ? host_set_int(in, name, value) : 0;
 }
 
-/* Parameters and start inputs of spec, then initialisation at t = 0. */
+/* ------------------------------------------------------------------ Model Exchange */
+
+/* The discrete states' iteration of an event (the instance in event mode), then continuous-time
+ * mode. */
+static int me_iterate(instance *in)
+{
+    fmi2EventInfo info;
+    do {
+        if (in->f->new_discrete_states(in->c, &info) != fmi2OK)
+            return fail("fmi2NewDiscreteStates");
+    } while (info.newDiscreteStatesNeeded && !info.terminateSimulation);
+    return in->f->enter_continuous_time_mode(in->c) != fmi2OK ? fail("continuous-time mode") : 0;
+}
+
+static int sign_changed(const double *a, const double *b, size_t n)
+{
+    size_t k;
+    for (k = 0; k < n; k++)
+        if ((a[k] > 0.0) != (b[k] > 0.0)) return 1;
+    return 0;
+}
+
+/* From t0 to t1 by explicit Euler steps of ME_H: the host's x, its derivatives, the time and
+ * the completed step; an event wherever an indicator changed sign or the FMU asks. */
+static int me_advance(instance *in, double t0, double t1)
+{
+    const fmu_lib *f = in->f;
+    size_t nx = in->m->nx, nz = in->m->nz, i;
+    double x[HOST_MAX_STATES], dx[HOST_MAX_STATES], z0[HOST_MAX_STATES], z[HOST_MAX_STATES];
+    int n = (int)((t1 - t0) / ME_H + 0.5), k;
+    fmi2Boolean event, stop;
+    if (f->get_continuous_states(in->c, x, nx) != fmi2OK ||
+        f->get_event_indicators(in->c, z0, nz) != fmi2OK)
+        return fail("fmi2GetContinuousStates / fmi2GetEventIndicators");
+    for (k = 1; k <= n; k++) {
+        if (f->get_derivatives(in->c, dx, nx) != fmi2OK) return fail("fmi2GetDerivatives");
+        for (i = 0; i < nx; i++) x[i] += ME_H * dx[i];
+        if (f->set_time(in->c, k == n ? t1 : t0 + k * ME_H) != fmi2OK ||
+            f->set_continuous_states(in->c, x, nx) != fmi2OK ||
+            f->completed_integrator_step(in->c, fmi2True, &event, &stop) != fmi2OK ||
+            f->get_event_indicators(in->c, z, nz) != fmi2OK)
+            return fail("a Model Exchange step");
+        if (event || sign_changed(z0, z, nz)) {
+            if (f->enter_event_mode(in->c) != fmi2OK || me_iterate(in) ||
+                f->get_continuous_states(in->c, x, nx) != fmi2OK ||
+                f->get_event_indicators(in->c, z, nz) != fmi2OK)
+                return fail("a Model Exchange event");
+        }
+        memcpy(z0, z, nz * sizeof *z);
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------------ instances */
+
+/* Parameters and start inputs of spec, then initialisation at t = 0 (Model Exchange: and the
+ * initial event iteration). */
 static int init_instance(instance *in, const run_spec *s)
 {
     if (in->f->setup(in->c, fmi2False, 0.0, 0.0, fmi2False, 0.0) != fmi2OK ||
         set_int(in, "gear_set", s->gear_set) || set_int(in, "friction_model", s->friction_model) ||
         set_int(in, "load_mode", s->load_mode) || host_set_real(in, "T_s", s->T_s) ||
         host_set_real(in, "w_set", s->w_set) || in->f->enter(in->c) != fmi2OK ||
-        in->f->exit_init(in->c) != fmi2OK)
+        in->f->exit_init(in->c) != fmi2OK || (in->model_exchange && me_iterate(in)))
         return fail("initialisation");
     return 0;
+}
+
+/* An instance of the spec's interface. */
+static int open_instance(instance *in, const fmu_lib *f, const fmu_info *m, const char *name,
+                         const run_spec *s)
+{
+    return host_open_as(in, f, m, name, s->model_exchange);
 }
 
 /* n steps from t0, every Real variable after each step into out (n * n_reals values; NULL:
@@ -76,7 +147,9 @@ static int run_steps(instance *in, double t0, int n, double *out)
     double scratch[HOST_MAX_REALS];
     int k;
     for (k = 0; k < n; k++) {
-        if (in->f->do_step(in->c, t0 + k * H, H, fmi2True) != fmi2OK) return fail("fmi2DoStep");
+        if (in->model_exchange ? me_advance(in, t0 + k * H, t0 + (k + 1) * H)
+                               : in->f->do_step(in->c, t0 + k * H, H, fmi2True) != fmi2OK)
+            return fail(in->model_exchange ? "Model Exchange" : "fmi2DoStep");
         if (in->f->get_real(in->c, in->m->reals, in->m->n_reals,
                             out ? out + (size_t)k * in->m->n_reals : scratch) != fmi2OK)
             return fail("fmi2GetReal");
@@ -109,10 +182,10 @@ static char *serialize(instance *in, fmi2FMUstate s, size_t *size)
 
 /* A plain run, then with a state taken half-way (taking a state restarts the integrator, so
  * the continuation is compared with continuations of the same state, not with the plain run). */
-static int simulate(const fmu_lib *f, const fmu_info *m, double t_end)
+static int simulate(const fmu_lib *f, const fmu_info *m, double t_end, int model_exchange)
 {
-    run_spec spec = {150.0, 209.43951023931956, 2, 0, 0};
-    run_spec other = {60.0, 150.0, 3, 0, 1};
+    run_spec spec = {150.0, 209.43951023931956, 2, 0, 0, 0};
+    run_spec other = {60.0, 150.0, 3, 0, 1, 0};
     int n = (int)(t_end / H + 0.5), half = n / 2, rc = -1;
     size_t nr = m->n_reals, size = 0, size2 = 0, rest = (size_t)(n - half) * nr;
     double *plain = calloc((size_t)n * nr, sizeof *plain);
@@ -121,7 +194,9 @@ static int simulate(const fmu_lib *f, const fmu_info *m, double t_end)
     fmi2FMUstate s = NULL, s2 = NULL;
     char *blob = NULL, *blob2 = NULL;
     memset(&b, 0, sizeof b);
-    if (!plain || !cont || !again || host_open(&a, f, m, "a") || init_instance(&a, &spec) ||
+    spec.model_exchange = other.model_exchange = model_exchange;
+    if (!plain || !cont || !again || open_instance(&a, f, m, "a", &spec) ||
+        init_instance(&a, &spec) ||
         run_steps(&a, 0.0, n, plain))
         goto done;
     /* fmi2Reset gives a fresh instance: the first half again, then take a state */
@@ -135,7 +210,7 @@ static int simulate(const fmu_lib *f, const fmu_info *m, double t_end)
         same(cont, again, rest, "restored state continues bit-identically"))
         goto done;
     /* a second instance with other parameters, from the serialized state */
-    if (host_open(&b, f, m, "b") || init_instance(&b, &other) ||
+    if (open_instance(&b, f, m, "b", &other) || init_instance(&b, &other) ||
         b.f->deserialize(b.c, blob, size, &s2) != fmi2OK || b.f->set_state(b.c, s2) != fmi2OK ||
         run_steps(&b, half * H, n - half, again) ||
         same(cont, again, rest, "deserialized state continues bit-identically in another "
@@ -148,7 +223,7 @@ static int simulate(const fmu_lib *f, const fmu_info *m, double t_end)
     /* a fresh instance, while the others still exist */
     b.f->free_state(b.c, &s2);
     host_close(&b);
-    if (host_open(&b, f, m, "fresh") || init_instance(&b, &spec) ||
+    if (open_instance(&b, f, m, "fresh", &spec) || init_instance(&b, &spec) ||
         run_steps(&b, 0.0, n, again) || same(plain, again, (size_t)n * nr, "a fresh instance "
                                                  "reproduces the run"))
         goto done;
@@ -163,9 +238,9 @@ done:
     free(plain);
     free(cont);
     free(again);
-    if (!rc) printf("run_fmu simulate: %d steps of %g s, %zu Real variables: reset, state "
+    if (!rc) printf("run_fmu simulate%s: %d steps of %g s, %zu Real variables: reset, state "
                     "restore, deserialization in a second instance and a fresh instance all "
-                    "bit-identical\n", n, H, nr);
+                    "bit-identical\n", model_exchange ? " (Model Exchange)" : "", n, H, nr);
     return rc;
 }
 
@@ -196,7 +271,7 @@ static int open_fds(void)
 
 static int soak_cycle(const fmu_lib *f, const fmu_info *m, int cycle)
 {
-    run_spec spec = {80.0 + cycle % 50, 209.43951023931956, 1 + cycle % 3, 0, 0};
+    run_spec spec = {80.0 + cycle % 50, 209.43951023931956, 1 + cycle % 3, 0, 0, 0};
     instance in;
     fmi2FMUstate s = NULL, s2 = NULL;
     size_t size = 0;
@@ -271,7 +346,7 @@ static void *run_job(void *arg)
     size_t len = (size_t)j->n * j->m->n_reals;
     if (j->start) pthread_barrier_wait(j->start);
     j->rc = -1;
-    if (host_open(&in, j->f, j->m, "thread") || init_instance(&in, &j->spec) ||
+    if (open_instance(&in, j->f, j->m, "thread", &j->spec) || init_instance(&in, &j->spec) ||
         run_steps(&in, 0.0, j->n, j->out))
         goto done;
     if (j->again && (in.f->reset(in.c) != fmi2OK || init_instance(&in, &j->spec) ||
@@ -284,7 +359,8 @@ done:
     return NULL;
 }
 
-static int threads(const fmu_lib *f, const fmu_info *m, int n_threads, double t_end)
+static int threads(const fmu_lib *f, const fmu_info *m, int n_threads, double t_end,
+                   int model_exchange)
 {
     int n = (int)(t_end / H + 0.5), k, round, rc = 0;
     size_t len = (size_t)n * m->n_reals;
@@ -295,7 +371,8 @@ static int threads(const fmu_lib *f, const fmu_info *m, int n_threads, double t_
     if (!jobs || !alone || !tid || pthread_barrier_init(&start, NULL, (unsigned)n_threads))
         return fail("out of memory");
     for (k = 0; k < n_threads; k++) { /* each alone, one after the other */
-        run_spec s = {50.0 + 20.0 * k, 150.0 + 10.0 * k, 1 + k % 3, 1 + k % 2, 1 + (k / 3) % 2};
+        run_spec s = {50.0 + 20.0 * k, 150.0 + 10.0 * k, 1 + k % 3, 1 + k % 2, 1 + (k / 3) % 2,
+                      model_exchange};
         jobs[k].f = f;
         jobs[k].m = m;
         jobs[k].spec = s;
@@ -322,9 +399,10 @@ static int threads(const fmu_lib *f, const fmu_info *m, int n_threads, double t_
         if (memcmp(alone[k], alone[0], len * sizeof(double)) == 0)
             rc = fail("instances with different parameters gave the same results");
     if (!rc)
-        printf("run_fmu threads: %d instances with different parameters, %d steps each, on %d "
+        printf("run_fmu threads%s: %d instances with different parameters, %d steps each, on %d "
                "threads twice: bit-identical to each run alone; reset on every thread "
-               "reproduces its run\n", n_threads, n, n_threads);
+               "reproduces its run\n", model_exchange ? " (Model Exchange)" : "", n_threads, n,
+               n_threads);
     pthread_barrier_destroy(&start);
     for (k = 0; k < n_threads; k++) {
         free(alone[k]);
@@ -339,13 +417,15 @@ static int threads(const fmu_lib *f, const fmu_info *m, int n_threads, double t_
 
 /* ------------------------------------------------------------------ outputs */
 
-static int outputs(const fmu_lib *f, const fmu_info *m, double t_end, int n_set, char **set)
+static int outputs(const fmu_lib *f, const fmu_info *m, double t_end, int n_set, char **set,
+                   int model_exchange)
 {
     double values[HOST_MAX_REALS];
     int n = (int)(t_end / H + 0.5), k, rc = -1;
     size_t i;
     instance in;
-    if (host_open(&in, f, m, "outputs") || f->setup(in.c, fmi2False, 0.0, 0.0, fmi2False, 0.0))
+    if (host_open_as(&in, f, m, "outputs", model_exchange) ||
+        f->setup(in.c, fmi2False, 0.0, 0.0, fmi2False, 0.0))
         goto done;
     for (k = 0; k < n_set; k++) {
         char name[128], *eq = strchr(set[k], '=');
@@ -357,8 +437,8 @@ static int outputs(const fmu_lib *f, const fmu_info *m, double t_end, int n_set,
         name[eq - set[k]] = '\0';
         if (host_set(&in, name, eq + 1)) goto done;
     }
-    if (f->enter(in.c) != fmi2OK ||
-        f->exit_init(in.c) != fmi2OK || run_steps(&in, 0.0, n, NULL) ||
+    if (f->enter(in.c) != fmi2OK || f->exit_init(in.c) != fmi2OK ||
+        (model_exchange && me_iterate(&in)) || run_steps(&in, 0.0, n, NULL) ||
         f->get_real(in.c, m->reals, m->n_reals, values) != fmi2OK)
         goto done;
     for (i = 0; i < m->n_reals; i++)
@@ -385,8 +465,8 @@ int main(int argc, char **argv)
     fmu_lib f;
     int rc;
     if (argc < 3) {
-        fprintf(stderr, "usage: run_fmu FMU_DIR simulate [T] | soak N [reload] [norss] | "
-                "outputs T [NAME=VALUE ...] | threads N [T]\n");
+        fprintf(stderr, "usage: run_fmu FMU_DIR simulate [T] [me] | soak N [reload] [norss] | "
+                "outputs T [NAME=VALUE ...] | threads N [T] [me]\n");
         return 2;
     }
     if (host_read_info(&m, argv[1])) return 1;
@@ -396,12 +476,15 @@ int main(int argc, char **argv)
     } else if (host_load(&f, m.so_path)) {
         rc = -1;
     } else {
+        int me = strcmp(argv[argc - 1], "me") == 0; /* Model Exchange */
+        if (me) argc--;
         if (strcmp(argv[2], "simulate") == 0)
-            rc = simulate(&f, &m, argc > 3 ? atof(argv[3]) : 0.1);
+            rc = simulate(&f, &m, argc > 3 ? atof(argv[3]) : 0.1, me);
         else if (strcmp(argv[2], "outputs") == 0 && argc > 3)
-            rc = outputs(&f, &m, atof(argv[3]), argc - 4, argv + 4);
+            rc = outputs(&f, &m, atof(argv[3]), argc - 4, argv + 4, me);
         else if (strcmp(argv[2], "threads") == 0)
-            rc = threads(&f, &m, argc > 3 ? atoi(argv[3]) : 4, argc > 4 ? atof(argv[4]) : 0.1);
+            rc = threads(&f, &m, argc > 3 ? atoi(argv[3]) : 4, argc > 4 ? atof(argv[4]) : 0.1,
+                         me);
         else
             rc = fail("unknown mode");
         host_unload(&f);

@@ -16,13 +16,16 @@ import sys
 import xml.etree.ElementTree as ET
 
 T_END = 0.1
-CASES = {  # name -> NAME=VALUE settings
+CASES = {  # name -> NAME=VALUE settings (a last "me": Model Exchange, the host's Euler steps)
     "defaults (full model, rtol 1e-6)": [],
     "rtol 1e-10, atol 1e-14": ["rtol=1e-10", "atol=1e-14"],
     "load_mode = torque, isothermal EHL": ["load_mode=torque", "friction_model=ehl_isothermal"],
     "newmark, mean mesh": ["solver=newmark", "mesh_model=mean"],
     "axle losses and oil sump": ["axle_losses=full", "thermal_model=sump"],
+    "Model Exchange, defaults": ["me"],
+    "Model Exchange, axle losses and oil sump": ["axle_losses=full", "thermal_model=sump", "me"],
 }
+T_END_ME = 0.02  # Model Exchange: 20 000 Euler steps of 1 us
 
 
 def run(cmd):
@@ -51,14 +54,15 @@ def main():
     names = {int(v.get("valueReference")): v.get("name") for v in root.iter("ScalarVariable")}
     failed = False
     for case, settings in CASES.items():
-        lin = run([args.linux_host, args.fmu_dir, "outputs", str(T_END)] + settings)
-        win = run([args.wine, args.win_host, windows_path(args.fmu_dir), "outputs", str(T_END)]
+        t_end = T_END_ME if settings[-1:] == ["me"] else T_END
+        lin = run([args.linux_host, args.fmu_dir, "outputs", str(t_end)] + settings)
+        win = run([args.wine, args.win_host, windows_path(args.fmu_dir), "outputs", str(t_end)]
                   + settings)
         if lin.keys() != win.keys() or not lin:
             sys.exit("compare: the two runs report different variables")
         differ = {vr: abs(win[vr] - lin[vr]) / max(abs(lin[vr]), 1e-300)
                   for vr in lin if lin[vr].hex() != win[vr].hex()}
-        print(f"compare: {case}: t = {T_END} s, {len(lin) - len(differ)} of {len(lin)} Real "
+        print(f"compare: {case}: t = {t_end} s, {len(lin) - len(differ)} of {len(lin)} Real "
               f"variables bit-identical on linux64 and win64"
               + ("" if not differ else "; differing (relative): " + ", ".join(
                   f"{names[vr]} ({d:.1e})" for vr, d in sorted(differ.items(),
