@@ -104,16 +104,7 @@ def check_args(args):
 def main(argv):
     args = _parser().parse_args(argv)
     check_args(args)
-    gear_fmu, vehicle_fmu = cliargs.fmu_path(args.fmu), cliargs.fmu_path(args.vehicle_fmu, "vehicle")
-    known = fmu_parameters(vehicle_fmu)
-    car = read_vehicle_file(args.vehicle, known) if args.vehicle else Vehicle()
-    car_set, gear_set = split_set(args.set, known)
-    car.fmu.update(car_set)
-    extra = cliargs.parse_set(gear_set)
-    cycle = load_cycle(args.cycle)
-    if args.master != "fmpy" and (cycle.grade is not None or car.fmu.get("grade", 0.0)):
-        raise cliargs.UsageError(f"--master {args.master}: a grade needs the fmpy master (it adds "
-                                 "the grade's load at the wheel); leave --master out")
+    gear_fmu, vehicle_fmu, car, extra, cycle = _scene(args)
     T_amb = args.t_amb + ZERO_C
     starts = [("cold", (args.t_oil0 if args.t_oil0 is not None else args.t_amb) + ZERO_C)]
     if not args.no_warm:
@@ -132,6 +123,32 @@ def main(argv):
             "T_amb_degC": args.t_amb, "set": extra, "vehicle": runs[0].vehicle.record(),
             "driveline": runs[0].driveline, "vehicle_file": str(args.vehicle or "")}
     text = summary.markdown(meta, summaries, diff)
+    final = _write(args, cycle, runs, text, {"meta": meta, "runs": summaries,
+                                             "warm_minus_cold": diff})
+    print(text, end="")
+    print(f"hypoid drive-cycle: wrote {final}/ (summary.json, summary.md, "
+          + ", ".join(f"{r.label}.csv" for r in runs) + ", drive_cycle.png)")
+    return 0
+
+
+def _scene(args):
+    """(gear FMU, vehicle FMU, the car, the gear FMU's --set values, the cycle), checked."""
+    gear_fmu = cliargs.fmu_path(args.fmu)
+    vehicle_fmu = cliargs.fmu_path(args.vehicle_fmu, "vehicle")
+    known = fmu_parameters(vehicle_fmu)
+    car = read_vehicle_file(args.vehicle, known) if args.vehicle else Vehicle()
+    car_set, gear_set = split_set(args.set, known)
+    car.fmu.update(car_set)
+    extra = cliargs.parse_set(gear_set)
+    cycle = load_cycle(args.cycle)
+    if args.master != "fmpy" and (cycle.grade is not None or car.fmu.get("grade", 0.0)):
+        raise cliargs.UsageError(f"--master {args.master}: a grade needs the fmpy master (it adds "
+                                 "the grade's load at the wheel); leave --master out")
+    return gear_fmu, vehicle_fmu, car, extra, cycle
+
+
+def _write(args, cycle, runs, text, data):
+    """The run's folder <out>/<name>/, written whole in a temporary folder and then renamed."""
     name = args.name or f"drive_cycle_{cycle.name}"
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -140,8 +157,7 @@ def main(argv):
         raise cliargs.UsageError(f"{final} exists: give another --name or remove it")
     tmp = pathlib.Path(tempfile.mkdtemp(dir=out, prefix=f".{name}."))
     try:
-        (tmp / "summary.json").write_text(json.dumps(
-            {"meta": meta, "runs": summaries, "warm_minus_cold": diff}, indent=2) + "\n")
+        (tmp / "summary.json").write_text(json.dumps(data, indent=2) + "\n")
         (tmp / "summary.md").write_text(text)
         for run in runs:
             summary.write_csv(run, tmp / f"{run.label}.csv")
@@ -149,7 +165,4 @@ def main(argv):
         os.replace(tmp, final)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
-    print(text, end="")
-    print(f"hypoid drive-cycle: wrote {final}/ (summary.json, summary.md, "
-          + ", ".join(f"{r.label}.csv" for r in runs) + ", drive_cycle.png)")
-    return 0
+    return final

@@ -122,6 +122,23 @@ def read_csv_cycle(path):
     (finite, >= 0), optionally grade [%] and phase. Every problem is one UsageError naming file,
     line and value."""
     p = pathlib.Path(path)
+    rows, sep, col = _csv_header(p)
+    t, v, g, ph = [], [], [], []
+    for n, line in rows[1:]:
+        tt, vv, gg, phase = _csv_row(p, n, line.split(sep), col, t[-1] if t else None)
+        t.append(tt)
+        v.append(vv * KMH)
+        g.append(gg / 100.0)
+        ph.append(phase)
+    if len(t) < 2:
+        raise UsageError(f"--cycle {p}: at least two rows of time and speed are needed")
+    grade = np.array(g) if col["grade"] is not None else None
+    return Cycle(p.stem, np.array(t), np.array(v), _phases(t, ph), f"file {p}", grade)
+
+
+def _csv_header(p):
+    """(rows [(line number, text)] without blanks and comments, the cell separator, {column:
+    index or None}) of a cycle file, its header checked."""
     try:
         lines = p.read_text().splitlines()
     except (OSError, UnicodeDecodeError) as e:
@@ -142,43 +159,44 @@ def read_csv_cycle(path):
               f"{', '.join(header)})")
     col = {c: header.index(c) if c in header else None for c in ("time", "speed", "grade",
                                                                 "phase")}
-    t, v, g, ph = [], [], [], []
-    for n, line in rows[1:]:
-        cells = [c.strip() for c in line.split(sep)]
-        if len(cells) != len(header):
-            _fail(p, n, f"{len(cells)} values for {len(header)} columns")
-        values = {}
-        for c in ("time", "speed", "grade"):
-            if col[c] is None:
-                continue
-            try:
-                values[c] = csvtext.number(cells[col[c]])
-            except ValueError:
-                _fail(p, n, f"{c} {cells[col[c]]!r} is not a number")
-            if not math.isfinite(values[c]):
-                _fail(p, n, f"{c} {cells[col[c]]} is not finite")
-        tt, vv, gg = values["time"], values["speed"], values.get("grade", 0.0)
-        if vv < 0 or tt < 0:
-            _fail(p, n, f"time {tt} s and speed {vv} km/h must not be negative")
-        if abs(gg) > GRADE_MAX_PCT:
-            _fail(p, n, f"grade {gg} % is beyond +-{GRADE_MAX_PCT:g} % (a percentage, uphill "
-                  "positive: 6 for 6 %)")
-        if t and tt <= t[-1]:
-            _fail(p, n, f"time {tt} s does not increase (the row before has {t[-1]} s)")
-        t.append(tt)
-        v.append(vv * KMH)
-        g.append(gg / 100.0)
-        ph.append(cells[col["phase"]] if col["phase"] is not None else "all")
-    if len(t) < 2:
-        raise UsageError(f"--cycle {p}: at least two rows of time and speed are needed")
+    col["n"] = len(header)
+    return rows, sep, col
+
+
+def _csv_row(p, n, cells, col, t_before):
+    """(time s, speed km/h, grade %, phase) of line n, checked."""
+    cells = [c.strip() for c in cells]
+    if len(cells) != col["n"]:
+        _fail(p, n, f"{len(cells)} values for {col['n']} columns")
+    values = {}
+    for c in ("time", "speed", "grade"):
+        if col[c] is None:
+            continue
+        try:
+            values[c] = csvtext.number(cells[col[c]])
+        except ValueError:
+            _fail(p, n, f"{c} {cells[col[c]]!r} is not a number")
+        if not math.isfinite(values[c]):
+            _fail(p, n, f"{c} {cells[col[c]]} is not finite")
+    tt, vv, gg = values["time"], values["speed"], values.get("grade", 0.0)
+    if vv < 0 or tt < 0:
+        _fail(p, n, f"time {tt} s and speed {vv} km/h must not be negative")
+    if abs(gg) > GRADE_MAX_PCT:
+        _fail(p, n, f"grade {gg} % is beyond +-{GRADE_MAX_PCT:g} % (a percentage, uphill "
+              "positive: 6 for 6 %)")
+    if t_before is not None and tt <= t_before:
+        _fail(p, n, f"time {tt} s does not increase (the row before has {t_before} s)")
+    return tt, vv, gg, cells[col["phase"]] if col["phase"] is not None else "all"
+
+
+def _phases(t, names):
+    """[(phase, t_start, t_end)] of consecutive rows with the same phase name."""
     phases = []
-    for k, name in enumerate(ph):
+    for k, name in enumerate(names):
         if not phases or phases[-1][0] != name:
             phases.append([name, t[k], t[k]])
         phases[-1][2] = t[min(k + 1, len(t) - 1)]
-    grade = np.array(g) if col["grade"] is not None else None
-    return Cycle(p.stem, np.array(t), np.array(v), [tuple(x) for x in phases], f"file {p}",
-                 grade)
+    return [tuple(x) for x in phases]
 
 
 def load_cycle(text):
