@@ -343,9 +343,11 @@ def write_xml_intenum(spec, path):
 
 # ---------------------------------------------------------------- FMI 3.0 modelDescription.xml
 # The same variables with FMI 3.0's types (Float64, Int32, Enumeration, Boolean, String), each
-# per-pair output as one array variable ("pair.W", Dimension 3), the independent variable time.
-# Value references: a scalar keeps its FMI 2.0 one, an array takes its first element's, time
-# the one after the last (HG_FMI3_VR_TIME), so the C table serves both versions.
+# per-pair output as one array variable ("pair.W", Dimension 3), the independent variable time
+# and, with Model Exchange, the event indicators as variables (FMI 3.0 lists them by value
+# reference). Value references: a scalar keeps its FMI 2.0 one, an array takes its first
+# element's, time the one after the last (HG_FMI3_VR_TIME), the event indicators the ones after
+# it (HG_FMI3_VR_INDICATOR), so the C table serves both versions.
 
 FMI3_TYPES = {"Real": "Float64", "Integer": "Int32", "Boolean": "Boolean", "String": "String"}
 
@@ -391,6 +393,8 @@ def xml3_variable(vr, v, count, enums):
         attrs += f' declaredType={quoteattr(v["typ"])}'
     attrs += xml_value_attrs(v)
     children = [f'      <Dimension start="{count}"/>'] if count > 1 else []
+    if "derivative" in v:  # der(x): the state's value reference (FMI 3.0)
+        attrs += f' derivative="{v["derivative"] - 1}"'
     if v["group"] in ("input", "parameter"):
         start = v["start"]
         if v["base"] == "String":
@@ -404,6 +408,25 @@ def xml3_variable(vr, v, count, enums):
     return [f"    <{elem} {attrs}>"] + children + [f"    </{elem}>"]
 
 
+def xml3_model_exchange(spec):
+    """The ModelExchange element (FMI 3.0), when the model has continuous states."""
+    if not spec.states:
+        return []
+    return [f'  <ModelExchange modelIdentifier={quoteattr(spec.model["modelIdentifier"])} '
+            'needsExecutionTool="false" needsCompletedIntegratorStep="true" '
+            'canBeInstantiatedOnlyOncePerProcess="false" canGetAndSetFMUState="true" '
+            'canSerializeFMUState="true" providesDirectionalDerivative="false" '
+            'providesAdjointDerivatives="false" providesEvaluateDiscreteStates="false"/>']
+
+
+def xml3_indicators(spec):
+    """The event indicators as local variables after time: [(vr, variable line)]."""
+    return [(len(spec.vars) + k, f'    <Float64 name="event_indicator[{k}]" '
+             f'valueReference="{len(spec.vars) + k}" causality="local" variability="continuous" '
+             f'description="event indicator {k} of the model (Model Exchange): an event is due '
+             'where it changes sign"/>') for k in range(1, spec.event_indicators() + 1)]
+
+
 def write_xml3(spec, path):
     m = spec.model
     cats = "\n".join(f"    <Category name={quoteattr(n)} description={quoteattr(d)}/>"
@@ -414,6 +437,7 @@ def write_xml3(spec, path):
         f'instantiationToken="{fmi3_guid(spec)}" description={quoteattr(m["description"])} '
         f'version={quoteattr(m["version"])} author={quoteattr(m["author"])} '
         'generationTool="modelDescription/generate.py" variableNamingConvention="structured">',
+    ] + xml3_model_exchange(spec) + [
         f'  <CoSimulation modelIdentifier={quoteattr(m["modelIdentifier"])} '
         'needsExecutionTool="false" canBeInstantiatedOnlyOncePerProcess="false" '
         'canGetAndSetFMUState="true" canSerializeFMUState="true" '
@@ -430,18 +454,26 @@ def write_xml3(spec, path):
               "  <ModelVariables>",
               f'    <Float64 name="time" valueReference="{len(spec.vars)}" causality="independent" '
               'variability="continuous" unit="s" description="simulation time"/>']
+    lines += [line for _, line in xml3_indicators(spec)]
     variables = fmi3_variables(spec)
     for vr, v, count in variables:
         lines += xml3_variable(vr, v, count, spec.enums)
     lines.append("  </ModelVariables>")
     lines.append("  <ModelStructure>")
     outputs = [vr for vr, v, _ in variables if v["group"] == "output"]
-    calculated = [vr for vr, v, _ in variables if v["group"] == "calculated"]
-    deps = start_dependencies(spec)  # by FMI 2.0 index: value reference + 1
-    lines += [f'    <Output valueReference="{vr}" dependencies=""/>' for vr in outputs]
-    lines += [f'    <InitialUnknown valueReference="{vr}" '
-              f'dependencies="{" ".join(str(k - 1) for k in deps[vr + 1])}"/>'
-              for vr in sorted(outputs + calculated)]
+    unknowns = [vr for vr, v, _ in variables if v["group"] in ("calculated", "state", "derivative")]
+    deps = start_dependencies(spec)  # by FMI 2.0 index (value reference + 1): the same data
+
+    def vrs(indices):
+        return " ".join(str(k - 1) for k in indices)
+
+    lines += [f'    <Output valueReference="{vr}" '
+              f'dependencies="{vrs(output_dependencies(spec, deps, vr + 1))}"/>' for vr in outputs]
+    lines += [f'    <ContinuousStateDerivative valueReference="{der}"/>' for _, _, der in spec.states]
+    lines += [f'    <InitialUnknown valueReference="{vr}" dependencies="{vrs(deps[vr + 1])}"/>'
+              if vr + 1 in deps else f'    <InitialUnknown valueReference="{vr}"/>'
+              for vr in sorted(outputs + unknowns)]
+    lines += [f'    <EventIndicator valueReference="{vr}"/>' for vr, _ in xml3_indicators(spec)]
     lines.append("  </ModelStructure>")
     lines.append("</fmiModelDescription>")
     write_if_changed(path, "\n".join(lines) + "\n")
@@ -532,7 +564,10 @@ def write_c(spec, directory):
          f'#define HG_GUID_INTENUM "{intenum_guid(spec)}" /* the integer-coded variant */',
          f'#define HG_TOKEN_FMI3 "{fmi3_guid(spec)}" /* the FMI 3.0 instantiationToken */',
          f"#define HG_NUM_VARS {len(spec.vars)}",
-         "#define HG_FMI3_VR_TIME HG_NUM_VARS /* FMI 3.0: the independent variable */", "",
+         "#define HG_FMI3_VR_TIME HG_NUM_VARS /* FMI 3.0: the independent variable */",
+         "/* FMI 3.0: event indicator k (0-based) is a variable of value reference",
+         " * HG_FMI3_VR_INDICATOR + k (Model Exchange, HG_NUM_EVENT_INDICATORS of them) */",
+         "#define HG_FMI3_VR_INDICATOR (HG_NUM_VARS + 1)", "",
          "typedef enum { HG_REAL, HG_INTEGER, HG_BOOLEAN, HG_STRING } hg_base_type;",
          "typedef enum { HG_INPUT, HG_OUTPUT, HG_PARAMETER, HG_CALCULATED, HG_LOCAL } hg_causality;",
          ""]

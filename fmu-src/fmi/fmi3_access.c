@@ -1,8 +1,8 @@
 /* FMI 3.0 variable access: fmi3Get/Set{Float64,Int32,Int64,Boolean,String} (adapters over
  * access.c). A value reference names a scalar or an array (the per-pair outputs, whose
- * elements are consecutive in the variable table, hg_fmi3_vars) or the independent variable
- * time; nValues must be the number of elements the value references name. Enumerations are
- * read and set as Int64, as FMI 3.0 has it. */
+ * elements are consecutive in the variable table, hg_fmi3_vars), the independent variable
+ * time or an event indicator (Model Exchange); nValues must be the number of elements the value
+ * references name. Enumerations are read and set as Int64, as FMI 3.0 has it. */
 #include <limits.h>
 #include <string.h>
 
@@ -15,6 +15,24 @@ typedef enum { F64, I32, ENUM64, BOOL, STR } kind;
 static const char *const kind_names[] = {"Float64", "Int32", "Enumeration (Int64)", "Boolean",
                                          "String"};
 static const hg_base_type kind_base[] = {HG_REAL, HG_INTEGER, HG_INTEGER, HG_BOOLEAN, HG_STRING};
+
+static int is_indicator(hg_vr vr)
+{
+    return vr >= HG_FMI3_VR_INDICATOR && vr < HG_FMI3_VR_INDICATOR + HG_NUM_EVENT_INDICATORS;
+}
+
+/* Time or an event indicator (the variables beyond the table) into *x. */
+static hg_status beyond_table(hg_instance *c, const char *fn, hg_vr vr, double *x)
+{
+    double z[HG_NUM_EVENT_INDICATORS + 1];
+    if (vr == HG_FMI3_VR_TIME) {
+        *x = hg_instance_time(c);
+        return HG_OK;
+    }
+    if (hg_me_indicators(c, fn, z, HG_NUM_EVENT_INDICATORS) != HG_OK) return HG_ERROR;
+    *x = z[vr - HG_FMI3_VR_INDICATOR];
+    return HG_OK;
+}
 
 static kind kind_of(hg_vr vr)
 {
@@ -37,7 +55,7 @@ static void fmi3_name(char *buf, size_t n, hg_vr vr)
 static size_t count_of(hg_instance *c, const char *fn, hg_vr vr, kind k)
 {
     char name[128];
-    if (vr == HG_FMI3_VR_TIME && k == F64) return 1;
+    if (k == F64 && (vr == HG_FMI3_VR_TIME || is_indicator(vr))) return 1;
     if (vr >= HG_NUM_VARS || hg_fmi3_vars[vr].count == 0) {
         hg_error(c, fn, "unknown value reference %u", (unsigned)vr);
         return 0;
@@ -86,8 +104,8 @@ static fmi3Status get(hg_instance *c, const char *fn, kind k, const fmi3ValueRef
     if (hg_prepare_get(c, fn, vr, nvr, values) != HG_OK || check_refs(c, fn, vr, nvr, n_values, k))
         return fmi3Error;
     for (i = 0; i < nvr; i++) {
-        if (vr[i] == HG_FMI3_VR_TIME) {
-            v.x = hg_instance_time(c);
+        if (vr[i] >= HG_NUM_VARS) { /* time or an event indicator */
+            if (beyond_table(c, fn, vr[i], &v.x) != HG_OK) return fmi3Error;
             store(k, values, j++, &v);
             continue;
         }
@@ -124,8 +142,9 @@ static fmi3Status set(hg_instance *c, const char *fn, kind k, const fmi3ValueRef
     if (hg_prepare_set(c, fn, vr, nvr, values) != HG_OK || check_refs(c, fn, vr, nvr, n_values, k))
         return fmi3Error;
     for (i = 0; i < nvr; i++) {
-        if (vr[i] == HG_FMI3_VR_TIME) {
-            hg_error(c, fn, "'time' cannot be set (it is the independent variable)");
+        if (vr[i] >= HG_NUM_VARS) {
+            hg_error(c, fn, "'%s' cannot be set (it is computed by the FMU)",
+                     vr[i] == HG_FMI3_VR_TIME ? "time" : "event_indicator");
             return fmi3Error;
         }
         for (e = 0; e < hg_fmi3_vars[vr[i]].count; e++, j++) {

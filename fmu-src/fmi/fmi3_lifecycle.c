@@ -1,4 +1,4 @@
-/* FMI 3.0 instance life cycle: co-simulation instantiation, logging categories,
+/* FMI 3.0 instance life cycle: co-simulation and Model Exchange instantiation, logging categories,
  * initialization (with the experiment's times), termination, reset and freeing (adapters over
  * lifecycle.c). */
 #include "fmi/instance.h"
@@ -39,6 +39,20 @@ fmi3Instance fmi3InstantiateCoSimulation(fmi3String name, fmi3String token,
     (void)intermediate_update;
     return hg_instantiate(__func__, name, token, tokens, resource_path, 0, emit,
                           (hg_any_fn)log_message, env, logging_on);
+}
+
+fmi3Instance fmi3InstantiateModelExchange(fmi3String name, fmi3String token,
+                                          fmi3String resource_path, fmi3Boolean visible,
+                                          fmi3Boolean logging_on, fmi3InstanceEnvironment env,
+                                          fmi3LogMessageCallback log_message)
+{
+    static const char *const tokens[] = {HG_TOKEN_FMI3, NULL};
+    hg_instance *c;
+    (void)visible;
+    c = hg_instantiate(__func__, name, token, tokens, resource_path, 0, emit,
+                       (hg_any_fn)log_message, env, logging_on);
+    if (c) c->model_exchange = 1;
+    return c;
 }
 
 void fmi3FreeInstance(fmi3Instance instance) { hg_free_instance(instance); }

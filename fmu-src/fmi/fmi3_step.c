@@ -1,5 +1,5 @@
-/* FMI 3.0 co-simulation stepping: fmi3DoStep (step.c), and the step-mode functions of what
- * this FMU does not provide (event mode, output derivatives). */
+/* FMI 3.0 co-simulation stepping: fmi3DoStep (step.c), and output derivatives, which this FMU
+ * does not provide. */
 #include "fmi/instance.h"
 #include "fmi3Functions.h"
 
@@ -11,7 +11,8 @@ fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 t, fmi3Float64 h,
     hg_instance *c = instance;
     hg_status status;
     (void)no_prior;
-    if (!hg_allowed(c, __func__, ST_STEP_COMPLETE)) return fmi3Error;
+    if (!hg_interface(c, __func__, 0) || !hg_allowed(c, __func__, ST_STEP_COMPLETE))
+        return fmi3Error;
     if (!event_handling_needed || !terminate_simulation || !early_return ||
         !last_successful_time) {
         hg_error(c, __func__, "NULL eventHandlingNeeded, terminateSimulation, earlyReturn or "
@@ -36,7 +37,7 @@ fmi3Status fmi3GetOutputDerivatives(fmi3Instance instance, const fmi3ValueRefere
     (void)orders;
     (void)values;
     (void)n_values;
-    if (!hg_allowed(c, __func__, ST_READABLE)) return fmi3Error;
+    if (!hg_allowed(c, __func__, ST_READABLE) || !hg_interface(c, __func__, 0)) return fmi3Error;
     hg_error(c, __func__, "not provided (maxOutputDerivativeOrder = 0)");
     return fmi3Error;
 }

@@ -1,12 +1,12 @@
-/* The FMI 3.0 functions of what this FMU does not implement: Model Exchange and Scheduled
- * Execution, event mode, clocks, configuration mode, derivatives and dependencies, and the
- * variable types it has none of. Each is present (hosts resolve every symbol) and returns
+/* The FMI 3.0 functions of what this FMU does not implement: Scheduled Execution, event mode in
+ * co-simulation (fmi3EnterStepMode; fmi3_me.c refuses fmi3EnterEventMode and
+ * fmi3UpdateDiscreteStates to a co-simulation instance), clocks, configuration mode,
+ * derivatives and dependencies, and the variable types it has none of. Each is present (hosts resolve every symbol) and returns
  * fmi3Error with a message naming itself; the typed getters and setters accept empty calls. */
 #include "fmi/instance.h"
 #include "fmi3Functions.h"
 
 #define UNUSED(x) (void)(x)
-#define NOT_CS "this FMU implements co-simulation only (no Model Exchange)"
 
 static fmi3Status unsupported(fmi3Instance instance, const char *fn, const char *why)
 {
@@ -31,7 +31,7 @@ static fmi3Status no_such_type(fmi3Instance instance, const char *fn,
     return fmi3Error;
 }
 
-/* A model instance cannot be made: the host's logger hears why. */
+/* An instance cannot be made: the host's logger hears why. */
 static fmi3Instance no_instance(const char *fn, fmi3String name, fmi3InstanceEnvironment env,
                                 fmi3LogMessageCallback log_message, const char *why)
 {
@@ -39,18 +39,6 @@ static fmi3Instance no_instance(const char *fn, fmi3String name, fmi3InstanceEnv
     hg_errorf(msg, sizeof msg, "%s: %s (instance '%s')", fn, why, name ? name : "(null)");
     if (log_message) log_message(env, fmi3Error, "logStatusError", msg);
     return NULL;
-}
-
-fmi3Instance fmi3InstantiateModelExchange(fmi3String name, fmi3String token,
-                                          fmi3String resource_path, fmi3Boolean visible,
-                                          fmi3Boolean logging_on, fmi3InstanceEnvironment env,
-                                          fmi3LogMessageCallback log_message)
-{
-    UNUSED(token);
-    UNUSED(resource_path);
-    UNUSED(visible);
-    UNUSED(logging_on);
-    return no_instance(__func__, name, env, log_message, NOT_CS);
 }
 
 fmi3Instance fmi3InstantiateScheduledExecution(
@@ -67,7 +55,8 @@ fmi3Instance fmi3InstantiateScheduledExecution(
     UNUSED(lock);
     UNUSED(unlock);
     return no_instance(__func__, name, env, log_message,
-                       "this FMU implements co-simulation only (no Scheduled Execution)");
+                       "this FMU implements co-simulation and Model Exchange, no Scheduled "
+                       "Execution");
 }
 
 /* ------------------------------------------------------------------ types without variables */
@@ -206,11 +195,6 @@ fmi3Status fmi3ActivateModelPartition(fmi3Instance instance, fmi3ValueReference 
 
 /* ------------------------------------------------------------------ modes */
 
-fmi3Status fmi3EnterEventMode(fmi3Instance instance)
-{
-    return unsupported(instance, __func__, "no event mode (hasEventMode = false)");
-}
-
 fmi3Status fmi3EnterStepMode(fmi3Instance instance)
 {
     return unsupported(instance, __func__, "no event mode (hasEventMode = false)");
@@ -229,20 +213,6 @@ fmi3Status fmi3ExitConfigurationMode(fmi3Instance instance)
 fmi3Status fmi3EvaluateDiscreteStates(fmi3Instance instance)
 {
     return unsupported(instance, __func__, "providesEvaluateDiscreteStates = false");
-}
-
-fmi3Status fmi3UpdateDiscreteStates(fmi3Instance instance, fmi3Boolean *need_update,
-                                    fmi3Boolean *terminate, fmi3Boolean *nominals_changed,
-                                    fmi3Boolean *values_changed, fmi3Boolean *next_time_defined,
-                                    fmi3Float64 *next_time)
-{
-    UNUSED(need_update);
-    UNUSED(terminate);
-    UNUSED(nominals_changed);
-    UNUSED(values_changed);
-    UNUSED(next_time_defined);
-    UNUSED(next_time);
-    return unsupported(instance, __func__, "no event mode (hasEventMode = false)");
 }
 
 /* ------------------------------------------------------------------ derivatives, dependencies */
@@ -301,74 +271,4 @@ fmi3Status fmi3GetAdjointDerivative(fmi3Instance instance, const fmi3ValueRefere
     UNUSED(sensitivity);
     UNUSED(n_sensitivity);
     return unsupported(instance, __func__, "providesAdjointDerivatives = false");
-}
-
-/* ------------------------------------------------------------------ Model Exchange */
-
-fmi3Status fmi3EnterContinuousTimeMode(fmi3Instance instance)
-{
-    return unsupported(instance, __func__, NOT_CS);
-}
-
-fmi3Status fmi3CompletedIntegratorStep(fmi3Instance instance, fmi3Boolean no_prior,
-                                       fmi3Boolean *enter_event_mode, fmi3Boolean *terminate)
-{
-    UNUSED(no_prior);
-    UNUSED(enter_event_mode);
-    UNUSED(terminate);
-    return unsupported(instance, __func__, NOT_CS);
-}
-
-fmi3Status fmi3SetTime(fmi3Instance instance, fmi3Float64 time)
-{
-    UNUSED(time);
-    return unsupported(instance, __func__, NOT_CS);
-}
-
-fmi3Status fmi3SetContinuousStates(fmi3Instance instance, const fmi3Float64 x[], size_t nx)
-{
-    UNUSED(x);
-    UNUSED(nx);
-    return unsupported(instance, __func__, NOT_CS);
-}
-
-fmi3Status fmi3GetContinuousStateDerivatives(fmi3Instance instance, fmi3Float64 dx[], size_t nx)
-{
-    UNUSED(dx);
-    UNUSED(nx);
-    return unsupported(instance, __func__, NOT_CS);
-}
-
-fmi3Status fmi3GetEventIndicators(fmi3Instance instance, fmi3Float64 z[], size_t nz)
-{
-    UNUSED(z);
-    UNUSED(nz);
-    return unsupported(instance, __func__, NOT_CS);
-}
-
-fmi3Status fmi3GetContinuousStates(fmi3Instance instance, fmi3Float64 x[], size_t nx)
-{
-    UNUSED(x);
-    UNUSED(nx);
-    return unsupported(instance, __func__, NOT_CS);
-}
-
-fmi3Status fmi3GetNominalsOfContinuousStates(fmi3Instance instance, fmi3Float64 nominal[],
-                                             size_t nx)
-{
-    UNUSED(nominal);
-    UNUSED(nx);
-    return unsupported(instance, __func__, NOT_CS);
-}
-
-fmi3Status fmi3GetNumberOfEventIndicators(fmi3Instance instance, size_t *nz)
-{
-    UNUSED(nz);
-    return unsupported(instance, __func__, NOT_CS);
-}
-
-fmi3Status fmi3GetNumberOfContinuousStates(fmi3Instance instance, size_t *nx)
-{
-    UNUSED(nx);
-    return unsupported(instance, __func__, NOT_CS);
 }

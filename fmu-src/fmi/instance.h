@@ -8,9 +8,10 @@
  *   snapshot.c       FMU state snapshots and their serialization
  *   vars.c, uri.c    hg_vars start values and copies; file:// URIs
  * FMI 2.0: fmi2_lifecycle.c, fmi2_access.c, fmi2_step.c (input derivatives, status queries),
- * fmi2_state.c, fmi2_me.c (Model Exchange: time, continuous states, derivatives, event
- * indicators, event and continuous-time modes, over model/exchange.h). FMI 3.0: fmi3_lifecycle.c, fmi3_access.c (typed, arrays), fmi3_step.c,
- * fmi3_state.c, fmi3_unsupported.c (the functions of interfaces this FMU does not implement). */
+ * fmi2_state.c, fmi2_me.c. FMI 3.0: fmi3_lifecycle.c, fmi3_access.c (typed, arrays),
+ * fmi3_step.c, fmi3_state.c, fmi3_me.c, fmi3_unsupported.c (the functions of what this FMU does
+ * not implement). Model Exchange of both (time, continuous states, derivatives, event
+ * indicators, event and continuous-time modes, over model/exchange.h): me.c. */
 #ifndef HG_INSTANCE_H
 #define HG_INSTANCE_H
 
@@ -195,6 +196,22 @@ hg_status hg_set_string(hg_instance *c, const char *fn, hg_vr vr, const char *va
 
 /* The communication step from t by h (the input derivatives of c->input_der held over it). */
 hg_status hg_do_step(hg_instance *c, const char *fn, double t, double h);
+
+/* ------------------------------------------------------------------ me.c (Model Exchange) */
+
+hg_status hg_me_enter_event_mode(hg_instance *c, const char *fn);
+/* The event's discrete update; *states_changed: the host must read the states again. */
+hg_status hg_me_update(hg_instance *c, const char *fn, int *states_changed);
+hg_status hg_me_enter_continuous_time(hg_instance *c, const char *fn);
+/* After the host's integrator step; *enter_event_mode: a step event is due. */
+hg_status hg_me_completed_step(hg_instance *c, const char *fn, int *enter_event_mode);
+hg_status hg_me_set_time(hg_instance *c, const char *fn, double t);
+/* The arrays have the model's sizes: nx = HG_NUM_STATES, nz = HG_NUM_EVENT_INDICATORS. */
+hg_status hg_me_set_states(hg_instance *c, const char *fn, const double x[], size_t nx);
+hg_status hg_me_states(hg_instance *c, const char *fn, double x[], size_t nx);
+hg_status hg_me_nominals(hg_instance *c, const char *fn, double x_nominal[], size_t nx);
+hg_status hg_me_derivatives(hg_instance *c, const char *fn, double dx[], size_t nx);
+hg_status hg_me_indicators(hg_instance *c, const char *fn, double z[], size_t nz);
 
 /* ------------------------------------------------------------------ snapshot.c */
 

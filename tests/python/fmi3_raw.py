@@ -43,6 +43,19 @@ class Host:
             name, token or self.token.encode(), resources or self.resources.encode(), False,
             True, False, False, None, 0, None, self.log, None)
 
+    def new_me(self, continuous=True):
+        """A Model Exchange instance, initialised, in continuous-time mode (or event mode)."""
+        inst = self.lib.fmi3InstantiateModelExchange(b"me", self.token.encode(),
+                                                     self.resources.encode(), False, True, None,
+                                                     self.log)
+        self.init(inst)
+        if continuous:
+            flags = [c_bool() for _ in range(5)]
+            self.lib.fmi3UpdateDiscreteStates(c_void_p(inst), *[byref(f) for f in flags],
+                                              byref(c_double()))
+            self.lib.fmi3EnterContinuousTimeMode(c_void_p(inst))
+        return inst
+
     def init(self, inst, stop=None):
         self.lib.fmi3EnterInitializationMode(c_void_p(inst), False, 0.0, 0.0, stop is not None,
                                              stop or 0.0)
@@ -232,11 +245,36 @@ def cases(h):
     def instantiate_blank_name():
         return [0 if h.new(name=b"  ") is None else 1]
 
-    def instantiate_model_exchange():
-        inst = h.lib.fmi3InstantiateModelExchange(b"i", h.token.encode(),
-                                                  h.resources.encode(), False, True, None,
-                                                  h.log)
-        return [0 if inst is None else 1]
+    def me(fn, continuous=True):
+        def case():
+            inst = h.new_me(continuous)
+            try:
+                return fn(inst)
+            finally:
+                h.lib.fmi3FreeInstance(c_void_p(inst))
+        return case
+
+    nx = 64  # more than the model's states: room for a wrong count
+    me_cases = {
+        "me_dostep": lambda i: [h.step(i, 0.0, 1e-3)],
+        "me_wrong_number_of_derivatives": lambda i: [
+            h.call("fmi3GetContinuousStateDerivatives", i, f64(*[0.0] * nx), 3)],
+        "me_null_states": lambda i: [h.call("fmi3SetContinuousStates", i, None, 1)],
+        "me_nan_state": lambda i: [h.call("fmi3SetContinuousStates", i,
+                                          f64(*[math.nan] * nx), v["n_states"])],
+        "me_set_time_nan": lambda i: [h.call("fmi3SetTime", i, c_double(math.nan))],
+        "me_number_null": lambda i: [h.call("fmi3GetNumberOfContinuousStates", i, None)],
+        "me_set_event_indicator": lambda i: [h.call("fmi3SetFloat64", i,
+                                                    vrs(v["event_indicator[1]"]), 1,
+                                                    f64(0.0), 1)],
+    }
+    for name, fn in me_cases.items():
+        out[name] = me(fn)
+    out["me_update_null"] = me(lambda i: [h.call("fmi3UpdateDiscreteStates", i, None, None,
+                                                 None, None, None, None)], continuous=False)
+    out["me_completed_step_in_event_mode"] = me(lambda i: [h.call(
+        "fmi3CompletedIntegratorStep", i, c_bool(True), byref(c_bool()), byref(c_bool()))],
+        continuous=False)
 
     def missing_resources():
         inst = h.new(resources=b"/nonexistent/resources/")
@@ -247,7 +285,6 @@ def cases(h):
 
     out.update(null_instance=null_instance, instantiate_wrong_token=instantiate_wrong_token,
                instantiate_blank_name=instantiate_blank_name,
-               instantiate_model_exchange=instantiate_model_exchange,
                missing_resources=missing_resources)
     return out
 

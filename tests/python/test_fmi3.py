@@ -1,14 +1,16 @@
-"""The FMI 3.0 co-simulation FMU (build/HypoidGearPair_fmi3.fmu): fmpy validates and simulates
-it, its co-simulation is bit-identical to the FMI 2.0 FMU's at equal settings (the default scene
-and two fidelity levels), its typed access (arrays, Enumeration as Int64, time) and its FMU
-states, serialization and reset behave as in FMI 2.0."""
+"""The FMI 3.0 FMU (build/HypoidGearPair_fmi3.fmu): fmpy validates and simulates it, its
+co-simulation is bit-identical to the FMI 2.0 FMU's at equal settings (the default scene and two
+fidelity levels), and so is its Model Exchange under the same integrator; its typed access
+(arrays, Enumeration as Int64, time, event indicators) and its FMU states, serialization and
+reset behave as in FMI 2.0."""
 
 import pathlib
+from ctypes import POINTER, c_double
 
 import numpy as np
 import pytest
 from fmpy import extract, read_model_description, simulate_fmu
-from fmpy.fmi3 import FMU3Slave
+from fmpy.fmi3 import FMU3Model, FMU3Slave
 from fmpy.validation import validate_fmu
 
 from hypoid.fmu.levels import LEVELS
@@ -41,7 +43,9 @@ def coded(values):
 def test_fmpy_validates_the_fmi3_fmu(fmu3, md3):
     assert validate_fmu(str(fmu3)) == []
     assert md3.fmiVersion == "3.0" and md3.coSimulation is not None
-    assert md3.modelExchange is None  # co-simulation only, until Model Exchange is implemented
+    assert md3.modelExchange is not None
+    assert len(md3.derivatives) == len([v for v in VARIABLES if v.startswith("der(")]) > 0
+    assert len(md3.eventIndicators) > 0
     names = {v.name: v for v in md3.modelVariables}
     assert names["time"].causality == "independent"
     assert int(names["pair.W"].dimensions[0].start) == 3
@@ -170,3 +174,75 @@ def test_fmu_reproduces_its_reference_results(fmu3, tmp_path):
         assert np.allclose(got[name], ref[:, j], rtol=0, atol=1e-6 * scale), (
             f"{name}: the FMU no longer reproduces its reference results; after a deliberate "
             "change of the model run `scripts/regenerate.sh regress` (it rewrites them with the regression's reference)")
+
+
+@pytest.mark.parametrize("scene", [{}, LEVELS["rigid"]], ids=["default", "rigid"])
+def test_model_exchange_is_bit_identical_to_fmi2(fmu3, scene):
+    """fmpy's CVode on the FMI 3.0 and the FMI 2.0 Model Exchange: the same bits; and near the
+    co-simulation (the agreement at tolerance is test_model_exchange.py's)."""
+    names = ["w_p", "w_g", "eta", "DTE", "P_loss", "T_fp"]
+    kw = dict(stop_time=STOP, output_interval=STEP, start_values=coded(scene), output=names,
+              fmi_type="ModelExchange", relative_tolerance=1e-6)
+    r3 = simulate_fmu(str(fmu3), **kw)
+    r2 = simulate_fmu(str(FMU2), **kw)
+    cs = simulate_fmu(str(fmu3), stop_time=STOP, output_interval=STEP,
+                      start_values=coded(scene), output=names)
+    for name in names:
+        assert np.array_equal(r3[name].view(np.uint64), r2[name].view(np.uint64)), name
+    assert r3["w_p"][-1] == pytest.approx(cs["w_p"][-1], rel=1e-3)
+
+
+def test_model_exchange_states_and_serialization(fmu3, md3, tmp_path):
+    """Explicit Euler steps through fmi3 Model Exchange: a state taken, serialized, restored
+    in the same and in a second instance continues bit-identically."""
+    unzipped = tmp_path / "fmu3me"
+    extract(str(fmu3), str(unzipped))
+    nx, nz = len(md3.derivatives), len(md3.eventIndicators)
+
+    def model(name):
+        m = FMU3Model(guid=md3.guid, unzipDirectory=str(unzipped),
+                      modelIdentifier=md3.modelExchange.modelIdentifier, instanceName=name)
+        m.instantiate()
+        m.enterInitializationMode()
+        m.exitInitializationMode()
+        m.updateDiscreteStates()
+        m.enterContinuousTimeMode()
+        return m
+
+    def ptr(a):
+        return a.ctypes.data_as(POINTER(c_double))
+
+    def euler(m, t, n, h=1e-6):
+        x, dx, z, y = (np.zeros(nx), np.zeros(nx), np.zeros(nz), np.zeros(nx))
+        for _ in range(n):
+            m.getContinuousStates(ptr(x), nx)
+            m.getContinuousStateDerivatives(ptr(dx), nx)
+            t += h
+            m.setTime(t)
+            y[:] = x + h * dx
+            m.setContinuousStates(ptr(y), nx)
+            m.getEventIndicators(ptr(z), nz)
+            enter, _ = m.completedIntegratorStep()
+            if enter:
+                m.enterEventMode()
+                m.updateDiscreteStates()
+                m.enterContinuousTimeMode()
+        m.getContinuousStates(ptr(x), nx)
+        return t, x.copy()
+
+    a = model("a")
+    t, _ = euler(a, 0.0, 50)
+    state = a.getFMUState()
+    blob = a.serializeFMUState(state)
+    _, first = euler(a, t, 50)
+    a.setFMUState(state)
+    _, again = euler(a, t, 50)
+    b = model("b")
+    restored = b.deserializeFMUState(blob)
+    b.setFMUState(restored)
+    _, other = euler(b, t, 50)
+    assert np.array_equal(first, again) and np.array_equal(first, other)
+    for m, s in ((a, state), (b, restored)):
+        m.freeFMUState(s)
+        m.terminate()
+        m.freeInstance()

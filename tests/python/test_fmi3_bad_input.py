@@ -1,5 +1,6 @@
-"""Bad input at every FMI 3.0 entry point of the FMU: calls in the wrong state, NULL pointers, NaN
-and out-of-range values, wrong array sizes, unknown value references, unsupported functions.
+"""Bad input at every FMI 3.0 entry point of the FMU, co-simulation and Model Exchange: calls in
+the wrong state or of the other interface, NULL pointers, NaN and out-of-range values, wrong array
+sizes, unknown value references, unsupported functions.
 Each returns fmi3Error (instantiation: NULL) with a message naming the function and, where there
 is one, the variable and the value; none crashes (the calls run in a child process,
 tests/python/fmi3_raw.py)."""
@@ -42,7 +43,7 @@ EXPECTED = {
     "dostep_wrong_time": ([ERROR], ["fmi3DoStep", "does not continue"]),
     "get_float32": ([ERROR], ["fmi3GetFloat32", "no Float32 variables"]),
     "get_binary": ([ERROR], ["fmi3GetBinary", "no Binary variables"]),
-    "enter_event_mode": ([ERROR], ["fmi3EnterEventMode", "hasEventMode"]),
+    "enter_event_mode": ([ERROR], ["fmi3EnterEventMode", "not allowed"]),
     "get_output_derivatives": ([ERROR], ["fmi3GetOutputDerivatives",
                                          "maxOutputDerivativeOrder"]),
     "model_exchange_function": ([ERROR], ["fmi3GetContinuousStates", "Model Exchange"]),
@@ -55,8 +56,17 @@ EXPECTED = {
     "null_instance": ([ERROR] * 4, []),
     "instantiate_wrong_token": ([0], ["fmi3InstantiateCoSimulation", "{not-the-token}"]),
     "instantiate_blank_name": ([0], ["fmi3InstantiateCoSimulation", "instanceName"]),
-    "instantiate_model_exchange": ([0], ["fmi3InstantiateModelExchange",
-                                         "co-simulation only"]),
+    "me_dostep": ([ERROR], ["fmi3DoStep", "co-simulation function", "Model Exchange"]),
+    "me_wrong_number_of_derivatives": ([ERROR], ["fmi3GetContinuousStateDerivatives",
+                                                 "3 derivatives"]),
+    "me_null_states": ([ERROR], ["fmi3SetContinuousStates", "NULL"]),
+    "me_nan_state": ([ERROR], ["fmi3SetContinuousStates", "state 0", "not a finite"]),
+    "me_set_time_nan": ([ERROR], ["fmi3SetTime", "not finite"]),
+    "me_number_null": ([ERROR], ["fmi3GetNumberOfContinuousStates", "NULL"]),
+    "me_set_event_indicator": ([ERROR], ["fmi3SetFloat64", "event_indicator"]),
+    "me_update_null": ([ERROR], ["fmi3UpdateDiscreteStates", "NULL"]),
+    "me_completed_step_in_event_mode": ([ERROR], ["fmi3CompletedIntegratorStep",
+                                                  "not allowed", "event mode"]),
     "missing_resources": ([ERROR], ["fmi3ExitInitializationMode", "/nonexistent/resources"]),
 }
 
@@ -70,6 +80,7 @@ def transcript(tmp_path_factory):
         z.extractall(d)
     md = read_model_description(str(FMU3))
     vr = {v.name: v.valueReference for v in md.modelVariables}
+    vr["n_states"] = len(md.derivatives)
     so = d / "binaries" / "x86_64-linux" / "HypoidGearPair.so"
     proc = subprocess.run([sys.executable, str(ROOT / "tests/python/fmi3_raw.py"), str(so),
                            md.instantiationToken, str(d / "resources") + "/", json.dumps(vr)],
