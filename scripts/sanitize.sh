@@ -6,11 +6,12 @@
 #      simulate 0.1 s with state save / serialize / restore / reset, 4 instances on 4 threads,
 #      200 instantiate-simulate-free cycles and 20 with dlopen/dlclose, and the first two again in
 #      Model Exchange (the host's Euler steps, events, states) - leak detection on, so a leak in
-#      the FMU fails the run;
+#      the FMU fails the run; the FMI 3.0 C host tests/host/run_fmu3.c likewise on the FMI 3.0
+#      FMU;
 #   3. fmpy simulating the sanitized FMU in Python (libasan preloaded; leak detection off there,
 #      because the Python interpreter's own allocations would count - the C host covers leaks),
-#      and every bad-input case of tests/python/test_robustness_inputs.py against it
-#      (SANITIZE_ROBUSTNESS=0 skips them).
+#      and every bad-input case of tests/python/test_robustness_inputs.py and of the FMI 3.0
+#      entry points (test_fmi3_bad_input.py) against it (SANITIZE_ROBUSTNESS=0 skips them).
 # Installs the GCC sanitizer runtimes with apt when missing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -43,6 +44,10 @@ build-asan/run_fmu build-asan/fmu soak 200 norss
 build-asan/run_fmu build-asan/fmu soak 20 reload norss
 build-asan/run_fmu build-asan/fmu simulate 0.01 me
 build-asan/run_fmu build-asan/fmu threads 3 0.005 me
+cc -std=c99 -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all \
+   -Wall -Wextra -Werror -I"$(sed -n 's/^FMI3_INCLUDE_DIR:PATH=//p' build-asan/CMakeCache.txt)" \
+   tests/host/run_fmu3.c -o build-asan/run_fmu3 -ldl
+build-asan/run_fmu3 build-asan/fmu_fmi3 0.05 0.001 >/dev/null
 
 echo "sanitize: fmpy in Python with libasan preloaded (leaks not checked in Python)"
 libasan=$(cc -print-file-name=libasan.so)
@@ -63,5 +68,7 @@ PY
 if [ "${SANITIZE_ROBUSTNESS:-1}" != 0 ]; then
   HG_ROBUSTNESS_FMU_DIR="$PWD/build-asan/fmu" LD_PRELOAD="$libasan" \
     .venv/bin/python -m pytest -q -p no:cacheprovider tests/python/test_robustness_inputs.py
+  HG_FMI3_FMU="$PWD/build-asan/HypoidGearPair_fmi3.fmu" LD_PRELOAD="$libasan" \
+    .venv/bin/python -m pytest -q -p no:cacheprovider tests/python/test_fmi3_bad_input.py
 fi
 echo "sanitize: all clean"

@@ -1,5 +1,5 @@
-/* libFuzzer target for the FMI 2.0 interface of the FMU, linked statically with the FMU sources
- * (all built with AddressSanitizer + UndefinedBehaviorSanitizer).
+/* libFuzzer target for the FMI 2.0 and FMI 3.0 interfaces of the FMU, linked statically with the
+ * FMU sources (all built with AddressSanitizer + UndefinedBehaviorSanitizer).
  *
  * The input is a little program: a first byte choosing how to instantiate (co-simulation or
  * Model Exchange), then operations, each
@@ -10,7 +10,12 @@
  * Terminate, logging categories, input derivatives, status queries, NULL arrays, a second
  * instance, free and instantiate again; Model Exchange's modes, time, states (set from the
  * input, of the right or a wrong count), derivatives, event indicators, nominals, completed
- * integrator steps and explicit Euler steps of the host.
+ * integrator steps and explicit Euler steps of the host. Opcode 15 with a small argument is an
+ * FMI 3.0 operation on a third instance (fmi3_op): instantiate (co-simulation or Model
+ * Exchange) / free, initialization with fuzzed times, typed get and set of value references
+ * (arrays, time, event indicators, unknown ones) with fuzzed nValues, DoStep, Model Exchange's
+ * calls, FMU states and (mutated) serialized states, reset, terminate and the functions it does
+ * not support.
  *
  * Beyond the sanitizers, two properties of the interface abort the run (and so are findings):
  * a call returning fmi2Error without a log message, and fmi2GetReal or fmi2GetDerivatives
@@ -32,6 +37,7 @@
 #include <unistd.h>
 
 #include "fmi2Functions.h"
+#include "fmi3Functions.h"
 #include "hg_vars.h"
 
 #ifndef HG_FUZZ_RESOURCE_DIR
@@ -76,7 +82,7 @@ static double value(input *in)
 static fmi2ValueReference vr_of(input *in)
 {
     unsigned k = u8(in);
-    if (k < 240) return (fmi2ValueReference)(k % (HG_NUM_VARS + 4));
+    if (k < 240) return (fmi2ValueReference)(k % (HG_NUM_VARS + 4)); /* + FMI 3.0's time */
     return k == 240 ? 0xFFFFFFFFu : k == 241 ? 0x80000000u : (fmi2ValueReference)u32(in);
 }
 
@@ -183,10 +189,205 @@ static void close_slot(slot *s)
     s->c = NULL;
 }
 
+/* ------------------------------------------------------------------ FMI 3.0 */
+
+typedef struct {
+    fmi3Instance c;
+    log_count log;
+    fmi3FMUState state;
+    double t;
+} slot3;
+
+static void logger3(fmi3InstanceEnvironment env, fmi3Status status, fmi3String category,
+                    fmi3String message)
+{
+    (void)status;
+    (void)category;
+    if (strlen(message) > 4096) abort();
+    ((log_count *)env)->messages++;
+}
+
+static char resource_path[4096];
+
+static void open3(slot3 *s, input *in)
+{
+    unsigned how = u8(in);
+    const char *token = how % 16 == 15 ? HG_GUID : HG_TOKEN_FMI3;
+    const char *res = how % 16 == 14 ? "/nonexistent/" : how % 16 == 13 ? NULL : resource_path;
+    if (how % 16 >= 6 && how % 16 <= 8)
+        s->c = fmi3InstantiateModelExchange("fuzz3me", token, res, fmi3False, (how >> 7) & 1,
+                                            &s->log, logger3);
+    else
+        s->c = fmi3InstantiateCoSimulation(how % 32 == 12 ? " " : "fuzz3", token, res,
+                                           fmi3False, (how >> 7) & 1, (how >> 6) & 1,
+                                           (how >> 5) & 1, NULL, 0, &s->log, logger3, NULL);
+    s->t = 0.0;
+}
+
+static void close3(slot3 *s)
+{
+    if (s->state) fmi3FreeFMUState(s->c, &s->state);
+    if (s->c) fmi3FreeInstance(s->c);
+    s->c = NULL;
+    s->state = NULL;
+}
+
+/* Typed access: up to 8 value references (arrays count 3), nValues exact or fuzzed. */
+static fmi3Status access3(slot3 *s, input *in, int set)
+{
+    fmi3ValueReference vr[8];
+    double r[32];
+    fmi3Int32 i32[32];
+    fmi3Int64 i64[32];
+    fmi3Boolean b[32];
+    fmi3String str[32];
+    unsigned kind = u8(in) % 5, n = u8(in) % 9, k, nv = 0;
+    fmi3Status st;
+    for (k = 0; k < n; k++) {
+        vr[k] = vr_of(in);
+        nv += vr[k] < HG_NUM_VARS && hg_fmi3_vars[vr[k]].count ? hg_fmi3_vars[vr[k]].count : 1;
+    }
+    if (u8(in) < 32) nv = u8(in) % 32;
+    if (nv > 32) nv = 32;
+    for (k = 0; set && k < 32; k++) {
+        r[k] = value(in);
+        i32[k] = (fmi3Int32)(int8_t)u8(in);
+        i64[k] = u8(in) < 250 ? (fmi3Int64)(u8(in) % 6) : (fmi3Int64)raw_double(in);
+        b[k] = u8(in) & 1;
+        str[k] = u8(in) < 8 ? NULL : "";
+    }
+    switch (kind) {
+    case 0:
+        if (set) return fmi3SetFloat64(s->c, vr, n, r, nv);
+        st = fmi3GetFloat64(s->c, vr, n, r, nv);
+        for (k = 0; st == fmi3OK && k < nv; k++)
+            if (!isfinite(r[k])) {
+                fprintf(stderr, "fuzz_fmi2: fmi3GetFloat64 gave %g\n", r[k]);
+                abort();
+            }
+        return st;
+    case 1: return set ? fmi3SetInt32(s->c, vr, n, i32, nv) : fmi3GetInt32(s->c, vr, n, i32, nv);
+    case 2: return set ? fmi3SetInt64(s->c, vr, n, i64, nv) : fmi3GetInt64(s->c, vr, n, i64, nv);
+    case 3: return set ? fmi3SetBoolean(s->c, vr, n, b, nv) : fmi3GetBoolean(s->c, vr, n, b, nv);
+    default:
+        return set ? fmi3SetString(s->c, vr, n, str, nv) : fmi3GetString(s->c, vr, n, str, nv);
+    }
+}
+
+static fmi3Status state3(slot3 *s, input *in)
+{
+    unsigned op = u8(in) % 4;
+    size_t size = 0, j;
+    fmi3Byte *bytes;
+    fmi3Status st;
+    if (op == 0) return fmi3GetFMUState(s->c, &s->state);
+    if (!s->state) return fmi3OK;
+    if (op == 1) return fmi3SetFMUState(s->c, s->state);
+    if (op == 2) return fmi3FreeFMUState(s->c, &s->state);
+    if ((st = fmi3SerializedFMUStateSize(s->c, s->state, &size)) != fmi3OK) return st;
+    if (!(bytes = malloc(size ? size : 1))) return fmi3OK;
+    st = fmi3SerializeFMUState(s->c, s->state, bytes, size);
+    for (j = 0; st == fmi3OK && j < (size_t)(u8(in) % 4) && size; j++)
+        bytes[u16(in) % size] ^= (fmi3Byte)u8(in);
+    if (st == fmi3OK) st = fmi3DeserializeFMUState(s->c, bytes, size - (u8(in) < 16), &s->state);
+    free(bytes);
+    return st;
+}
+
+static fmi3Status step3(slot3 *s, input *in)
+{
+    fmi3Boolean event, terminate, early;
+    fmi3Float64 last;
+    double h = u8(in) < 200 ? 1e-4 * (1 + u8(in) % 8) : value(in);
+    double t = u8(in) < 240 ? s->t : value(in);
+    fmi3Status st = fmi3DoStep(s->c, t, h, fmi3True, &event, &terminate, &early,
+                               u8(in) < 8 ? NULL : &last);
+    if (st == fmi3OK) s->t = t + h;
+    return st;
+}
+
+static fmi3Status unsupported3(slot3 *s, input *in)
+{
+    fmi3Float64 x[4];
+    fmi3Float32 f[4];
+    fmi3ValueReference vr = vr_of(in);
+    fmi3Int32 order = 1;
+    switch (u8(in) % 6) {
+    case 0: return fmi3EnterEventMode(s->c);
+    case 1: return fmi3GetOutputDerivatives(s->c, &vr, 1, &order, x, 1);
+    case 2: return fmi3GetContinuousStates(s->c, x, 4);
+    case 3: return fmi3GetFloat32(s->c, &vr, u8(in) % 2, f, 1);
+    case 4: return fmi3SetDebugLogging(s->c, u8(in) & 1, 0, NULL);
+    default: return fmi3EnterStepMode(s->c);
+    }
+}
+
+/* Model Exchange's calls (on any instance: a co-simulation one must refuse them); the state
+ * vector set from the derivatives (an explicit Euler step) or raw values, counts right or not. */
+static fmi3Status me3(slot3 *s, input *in)
+{
+    double x[HG_NUM_STATES + 2], dx[HG_NUM_STATES + 2], z[HG_NUM_EVENT_INDICATORS + 2];
+    size_t nx = u8(in) < 240 ? HG_NUM_STATES : u8(in) % (HG_NUM_STATES + 2), k;
+    fmi3Boolean b[6];
+    fmi3Float64 next;
+    fmi3Status st;
+    int raw;
+    switch (u8(in) % 7) {
+    case 0:
+        return fmi3UpdateDiscreteStates(s->c, &b[0], &b[1], &b[2], &b[3], &b[4], &next);
+    case 1: return fmi3EnterContinuousTimeMode(s->c);
+    case 2: return fmi3EnterEventMode(s->c);
+    case 3: return fmi3GetEventIndicators(s->c, z, u8(in) < 240 ? HG_NUM_EVENT_INDICATORS : 1);
+    case 4: return fmi3GetNominalsOfContinuousStates(s->c, x, nx);
+    case 5: return fmi3CompletedIntegratorStep(s->c, fmi3True, &b[0], u8(in) < 8 ? NULL : &b[1]);
+    default: /* an explicit Euler step of 1 us, or states from the input */
+        if ((st = fmi3GetContinuousStates(s->c, x, nx)) != fmi3OK ||
+            (st = fmi3GetContinuousStateDerivatives(s->c, dx, nx)) != fmi3OK)
+            return st;
+        raw = u8(in) >= 250;
+        for (k = 0; k < nx; k++) x[k] = raw ? value(in) : x[k] + 1e-6 * dx[k];
+        s->t += 1e-6;
+        if ((st = fmi3SetTime(s->c, s->t)) != fmi3OK) return st;
+        return fmi3SetContinuousStates(s->c, x, nx);
+    }
+}
+
+/* One FMI 3.0 operation; a call returning fmi3Error must have said why (errors are always on). */
+static void fmi3_op(slot3 *s, input *in)
+{
+    unsigned op = u8(in) % 12;
+    long before = s->log.messages;
+    fmi3Status st = fmi3OK;
+    if (!s->c && op != 0) return;
+    switch (op) {
+    case 0: close3(s); open3(s, in); return;
+    case 1: {
+        double start = u8(in) < 200 ? 0.0 : value(in), stop = value(in);
+        st = fmi3EnterInitializationMode(s->c, fmi3False, 0.0, start, u8(in) & 1, stop);
+        if (st == fmi3OK) s->t = start;
+        break;
+    }
+    case 2: st = fmi3ExitInitializationMode(s->c); break;
+    case 3: st = access3(s, in, 1); break;
+    case 4: st = access3(s, in, 0); break;
+    case 5: st = step3(s, in); break;
+    case 6: st = state3(s, in); break;
+    case 7: st = u8(in) & 1 ? fmi3Reset(s->c) : fmi3Terminate(s->c); s->t = 0.0; break;
+    case 8: case 9: st = me3(s, in); break;
+    default: st = unsupported3(s, in); break;
+    }
+    if (st == fmi3Error && s->log.messages == before) {
+        fprintf(stderr, "fuzz_fmi2: fmi3Error without a log message (op %u)\n", op);
+        abort();
+    }
+    if (st == fmi3Fatal) abort();
+}
+
 /* ------------------------------------------------------------------ operations */
 
 typedef struct {
     slot inst[2];
+    slot3 inst3;
     int cur;
     fmi2FMUstate state[2];
     fmi2Component state_owner[2];
@@ -538,7 +739,13 @@ static void run(session *ss, input *in)
             close_slot(s);
             open_slot(s, in);
             continue;
-        default: ss->cur ^= 1; continue;
+        default:
+            if (u8(in) < 96) {
+                if (ss->steps++ < MAX_STEPS) fmi3_op(&ss->inst3, in);
+            } else {
+                ss->cur ^= 1;
+            }
+            continue;
         }
         require_message(s, before, st);
     }
@@ -558,6 +765,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     run(&ss, &in);
     for (k = 0; k < 2; k++) free_state(&ss, k);
     for (k = 0; k < 2; k++) close_slot(&ss.inst[k]);
+    close3(&ss.inst3);
     free(ss.blob);
     return 0;
 }
@@ -667,6 +875,31 @@ static int write_seeds(const char *dir)
     op(&s, 3, 16, 10, 0);
     op(&s, 4, 2, 0, 0, 0);               /* every Real */
     write_seed(dir, "model_exchange", &s);
+    /* FMI 3.0: instantiate, initialize, steps, get all, state round trip, unsupported */
+    s.n = 0;
+    op(&s, 2, 0, 0);
+    op(&s, 4, 15, 0, 0, 0);                  /* fmi3 instantiate */
+    op(&s, 6, 15, 0, 1, 0, 0, 0);            /* enter initialization */
+    op(&s, 3, 15, 0, 2);                     /* exit */
+    for (k = 0; k < 4; k++) op(&s, 7, 15, 0, 5, 0, 0, 0, 9); /* steps of 0.1 ms */
+    op(&s, 9, 15, 0, 4, 0, 3, 4, 32, 35, 255); /* Float64: w_p .., the arrays pair.W, pair.mu */
+    op(&s, 4, 15, 0, 6, 0);                    /* get the state */
+    op(&s, 6, 15, 0, 6, 3, 0, 255);            /* serialize, deserialize, set */
+    op(&s, 5, 15, 0, 10, 0, 1);                /* output derivatives (not provided) */
+    write_seed(dir, "fmi3", &s);
+    /* FMI 3.0 Model Exchange: initial event, continuous time, Euler steps, an event */
+    s.n = 0;
+    op(&s, 2, 0, 0);
+    op(&s, 4, 15, 0, 0, 6);                    /* fmi3InstantiateModelExchange */
+    op(&s, 6, 15, 0, 1, 0, 0, 0);
+    op(&s, 3, 15, 0, 2);
+    op(&s, 5, 15, 0, 8, 0, 0);                 /* update discrete states */
+    op(&s, 5, 15, 0, 8, 0, 1);                 /* continuous-time mode */
+    for (k = 0; k < 6; k++) op(&s, 6, 15, 0, 9, 0, 6, 0); /* Euler steps */
+    op(&s, 5, 15, 0, 8, 0, 5);                 /* completed integrator step */
+    op(&s, 5, 15, 0, 8, 0, 3);                 /* event indicators */
+    op(&s, 4, 15, 0, 6, 0);                    /* FMU state */
+    write_seed(dir, "fmi3_me", &s);
     file_seed(dir, "gearset_file", "gearsets/gearset1.txt", 0);
     file_seed(dir, "lubricant_file", "lubricants/OS265962.txt", 1);
     return 0;
@@ -678,6 +911,7 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
     (void)argc;
     (void)argv;
     percent_encode(HG_FUZZ_RESOURCE_DIR, resource_uri, sizeof resource_uri);
+    snprintf(resource_path, sizeof resource_path, "%s/", HG_FUZZ_RESOURCE_DIR);
     if (seeds) exit(write_seeds(seeds) ? 1 : 0);
     snprintf(tmp_dir, sizeof tmp_dir, "%s/hg-fuzz-XXXXXX",
              getenv("HG_FUZZ_TMPDIR") ? getenv("HG_FUZZ_TMPDIR") : "/tmp");
