@@ -48,6 +48,7 @@ cc -std=c99 -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-san
    -Wall -Wextra -Werror -I"$(sed -n 's/^FMI3_INCLUDE_DIR:PATH=//p' build-asan/CMakeCache.txt)" \
    tests/host/run_fmu3.c -o build-asan/run_fmu3 -ldl
 build-asan/run_fmu3 build-asan/fmu_fmi3 0.05 0.001 >/dev/null
+build-asan/run_fmu3 build-asan/fmu_fmi3 0.0002 1e-6 me >/dev/null
 
 echo "sanitize: fmpy in Python with libasan preloaded (leaks not checked in Python)"
 libasan=$(cc -print-file-name=libasan.so)

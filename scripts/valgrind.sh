@@ -25,6 +25,7 @@ echo "valgrind: memcheck"
 cc -std=c99 -O2 -g -Wall -Wextra -Werror -I"$(sed -n 's/^FMI3_INCLUDE_DIR:PATH=//p' build/CMakeCache.txt)" \
    tests/host/run_fmu3.c -o build/run_fmu3 -ldl
 "${memcheck[@]}" build/run_fmu3 build/fmu_fmi3 0.01 0.001 >/dev/null
+"${memcheck[@]}" build/run_fmu3 build/fmu_fmi3 0.0001 1e-6 me >/dev/null
 "${memcheck[@]}" build/run_fmu build/fmu simulate 0.002 me
 "${memcheck[@]}" build/run_fmu build/fmu threads 2 0.001 me
 echo "valgrind: helgrind"

@@ -132,8 +132,9 @@ run_tests() {
   /usr/lib/wine/wineserver -w # Wine's server ends a few seconds after its last client: wait
 }
 
-# The FMI 3.0 FMU: every Float64 output (arrays element by element) after each of 100 steps of
-# 1 ms from the default start, bit for bit as on linux64 (tests/host/run_fmu3.c on both)
+# The FMI 3.0 FMU: every Float64 output (arrays element by element) after each of 100
+# co-simulation steps of 1 ms and after each of 1000 Model Exchange Euler steps of 1 us from the
+# default start, bit for bit as on linux64 (tests/host/run_fmu3.c on both)
 fmi3() {
   local fmu=build/HypoidGearPair_fmi3.fmu dir=$win/fmu3-unzipped flags=(-std=c99 -O2 -Wall
     -Wextra -Wpedantic -Werror -I"$(fmi_include fmi3)")
@@ -142,10 +143,17 @@ fmi3() {
     || { echo "win64: FAILED - $fmu has no binaries/x86_64-windows/HypoidGearPair.dll" >&2; exit 1; }
   $triple-gcc "${flags[@]}" tests/host/run_fmu3.c -o "$win/run_fmu3.exe" -static
   cc "${flags[@]}" tests/host/run_fmu3.c -o "$win/run_fmu3_linux" -ldl
-  diff <($wine "$win/run_fmu3.exe" "Z:${dir//\//\\}" 0.1 0.001 | tr -d '\r') \
-    <("$win/run_fmu3_linux" "$dir" 0.1 0.001) >/dev/null \
-    || { echo "win64: FAILED - the FMI 3.0 FMU's outputs differ between win64 and linux64" >&2; exit 1; }
-  echo "win64: the FMI 3.0 FMU's $("$win/run_fmu3_linux" "$dir" 0.1 0.001 | wc -w) values (100 steps) agree bit for bit with linux64"
+  local run what
+  for run in "0.1 0.001" "0.001 1e-6 me"; do
+    what="co-simulation, 100 steps"
+    [[ $run == *me ]] && what="Model Exchange, 1000 Euler steps"
+    # shellcheck disable=SC2086 # the run's arguments, split
+    diff <($wine "$win/run_fmu3.exe" "Z:${dir//\//\\}" $run | tr -d '\r') \
+      <("$win/run_fmu3_linux" "$dir" $run) >/dev/null \
+      || { echo "win64: FAILED - the FMI 3.0 FMU's outputs differ between win64 and linux64 ($what)" >&2; exit 1; }
+    # shellcheck disable=SC2086
+    echo "win64: the FMI 3.0 FMU's $("$win/run_fmu3_linux" "$dir" $run | wc -w) values ($what) agree bit for bit with linux64"
+  done
 }
 
 # The example vehicle FMU (examples/vehicle): its DLL's exports and imports, and every Real

@@ -2,9 +2,10 @@
  * (scripts/win64.sh): loads DIR/binaries/<platform>/HypoidGearPair.{so,dll} of an unzipped FMI 3.0
  * FMU, instantiates it with the instantiationToken of DIR/modelDescription.xml, steps T seconds
  * by h from the default start values and prints every Float64 output (arrays element by element)
- * as hexadecimal floating point (%a, exact) at each step's end.
+ * as hexadecimal floating point (%a, exact) at each step's end. With "me": Model Exchange, explicit
+ * Euler steps of h with an event where an event indicator changes sign or the FMU asks for one.
  *
- *   run_fmu3 FMU_DIR T h */
+ *   run_fmu3 FMU_DIR T h [me] */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,7 +41,7 @@ static void *lib_symbol(void *lib, const char *name) { return dlsym(lib, name); 
 #define LOAD(fn, name)                                                                         \
     do {                                                                                       \
         void *sym_ = lib_symbol(lib, #name);                                                   \
-        if (!sym_) return fprintf(stderr, "FAILED: no %s\n", #name), 1;                        \
+        if (!sym_) return fprintf(stderr, "FAILED: no %s\n", #name), -1;                        \
         memcpy(&fn, &sym_, sizeof sym_);                                                       \
     } while (0)
 
@@ -93,6 +94,83 @@ static size_t outputs(const char *xml, fmi3ValueReference *vr, size_t *count)
     return n;
 }
 
+typedef struct {
+    fmi3InstantiateCoSimulationTYPE *instantiate_cs;
+    fmi3InstantiateModelExchangeTYPE *instantiate_me;
+    fmi3EnterInitializationModeTYPE *enter;
+    fmi3ExitInitializationModeTYPE *exit_init;
+    fmi3DoStepTYPE *do_step;
+    fmi3GetFloat64TYPE *get;
+    fmi3TerminateTYPE *terminate;
+    fmi3FreeInstanceTYPE *free_instance;
+    fmi3UpdateDiscreteStatesTYPE *update;
+    fmi3EnterContinuousTimeModeTYPE *continuous;
+    fmi3EnterEventModeTYPE *event_mode;
+    fmi3CompletedIntegratorStepTYPE *completed;
+    fmi3SetTimeTYPE *set_time;
+    fmi3GetContinuousStatesTYPE *get_x;
+    fmi3SetContinuousStatesTYPE *set_x;
+    fmi3GetContinuousStateDerivativesTYPE *get_dx;
+    fmi3GetEventIndicatorsTYPE *get_z;
+    fmi3GetNumberOfContinuousStatesTYPE *nx;
+    fmi3GetNumberOfEventIndicatorsTYPE *nz;
+} fns;
+
+static int load(fns *f, void *lib)
+{
+    LOAD(f->instantiate_cs, fmi3InstantiateCoSimulation);
+    LOAD(f->instantiate_me, fmi3InstantiateModelExchange);
+    LOAD(f->enter, fmi3EnterInitializationMode);
+    LOAD(f->exit_init, fmi3ExitInitializationMode);
+    LOAD(f->do_step, fmi3DoStep);
+    LOAD(f->get, fmi3GetFloat64);
+    LOAD(f->terminate, fmi3Terminate);
+    LOAD(f->free_instance, fmi3FreeInstance);
+    LOAD(f->update, fmi3UpdateDiscreteStates);
+    LOAD(f->continuous, fmi3EnterContinuousTimeMode);
+    LOAD(f->event_mode, fmi3EnterEventMode);
+    LOAD(f->completed, fmi3CompletedIntegratorStep);
+    LOAD(f->set_time, fmi3SetTime);
+    LOAD(f->get_x, fmi3GetContinuousStates);
+    LOAD(f->set_x, fmi3SetContinuousStates);
+    LOAD(f->get_dx, fmi3GetContinuousStateDerivatives);
+    LOAD(f->get_z, fmi3GetEventIndicators);
+    LOAD(f->nx, fmi3GetNumberOfContinuousStates);
+    LOAD(f->nz, fmi3GetNumberOfEventIndicators);
+    return 0;
+}
+
+/* The event: the discrete update, then back to continuous-time mode. */
+static int event(const fns *f, fmi3Instance inst, int from_continuous)
+{
+    fmi3Boolean b[5];
+    fmi3Float64 next;
+    if (from_continuous && f->event_mode(inst)) return -1;
+    return f->update(inst, &b[0], &b[1], &b[2], &b[3], &b[4], &next) || f->continuous(inst) ? -1
+                                                                                          : 0;
+}
+
+#define MAX_X 64
+
+/* One explicit Euler step of h in Model Exchange, with an event where an indicator changes
+ * sign or the FMU asks for one. */
+static int euler(const fns *f, fmi3Instance inst, double t, double h)
+{
+    double x[MAX_X], dx[MAX_X], z0[MAX_X], z1[MAX_X];
+    size_t nx, nz, k;
+    fmi3Boolean enter, terminate;
+    int crossed = 0;
+    if (f->nx(inst, &nx) || f->nz(inst, &nz) || nx > MAX_X || nz > MAX_X ||
+        f->get_z(inst, z0, nz) || f->get_x(inst, x, nx) || f->get_dx(inst, dx, nx))
+        return -1;
+    for (k = 0; k < nx; k++) x[k] += h * dx[k];
+    if (f->set_time(inst, t + h) || f->set_x(inst, x, nx) || f->get_z(inst, z1, nz) ||
+        f->completed(inst, fmi3True, &enter, &terminate))
+        return -1;
+    for (k = 0; k < nz; k++) crossed |= (z0[k] < 0.0) != (z1[k] < 0.0);
+    return crossed || enter ? event(f, inst, 1) : 0;
+}
+
 int main(int argc, char **argv)
 {
     char path[4096], token[128], resources[4096];
@@ -102,16 +180,11 @@ int main(int argc, char **argv)
     size_t count[MAX_OUT], n, k, e, total = 0;
     double t = 0.0, t_end, h, values[4 * MAX_OUT];
     fmi3Instance inst;
-    fmi3Boolean event, terminate, early;
+    fmi3Boolean event_needed, terminate, early;
     fmi3Float64 last;
-    fmi3InstantiateCoSimulationTYPE *instantiate;
-    fmi3EnterInitializationModeTYPE *enter;
-    fmi3ExitInitializationModeTYPE *exit_init;
-    fmi3DoStepTYPE *do_step;
-    fmi3GetFloat64TYPE *get;
-    fmi3TerminateTYPE *terminate_fn;
-    fmi3FreeInstanceTYPE *free_instance;
-    if (argc != 4) return fprintf(stderr, "usage: run_fmu3 FMU_DIR T h\n"), 2;
+    fns f;
+    int me = argc == 5 && strcmp(argv[4], "me") == 0;
+    if (argc != 4 && !me) return fprintf(stderr, "usage: run_fmu3 FMU_DIR T h [me]\n"), 2;
     t_end = atof(argv[2]);
     h = atof(argv[3]);
     snprintf(path, sizeof path, "%s" SEP "modelDescription.xml", argv[1]);
@@ -124,28 +197,26 @@ int main(int argc, char **argv)
              argv[1]);
     snprintf(resources, sizeof resources, "%s" SEP "resources" SEP, argv[1]);
     if (!(lib = lib_open(path))) return fprintf(stderr, "FAILED: cannot load %s\n", path), 1;
-    LOAD(instantiate, fmi3InstantiateCoSimulation);
-    LOAD(enter, fmi3EnterInitializationMode);
-    LOAD(exit_init, fmi3ExitInitializationMode);
-    LOAD(do_step, fmi3DoStep);
-    LOAD(get, fmi3GetFloat64);
-    LOAD(terminate_fn, fmi3Terminate);
-    LOAD(free_instance, fmi3FreeInstance);
-    inst = instantiate("run_fmu3", token, resources, fmi3False, fmi3False,
-                                           fmi3False, fmi3False, NULL, 0, NULL, logger, NULL);
-    if (!inst || enter(inst, fmi3False, 0.0, 0.0, fmi3False, 0.0) ||
-        exit_init(inst))
+    if (load(&f, lib)) return 1;
+    inst = me ? f.instantiate_me("run_fmu3", token, resources, fmi3False, fmi3False, NULL, logger)
+              : f.instantiate_cs("run_fmu3", token, resources, fmi3False, fmi3False, fmi3False,
+                                 fmi3False, NULL, 0, NULL, logger, NULL);
+    if (!inst || f.enter(inst, fmi3False, 0.0, 0.0, fmi3False, 0.0) || f.exit_init(inst) ||
+        (me && event(&f, inst, 0)))
         return fprintf(stderr, "FAILED: initialization\n"), 1;
     for (k = 0; t < t_end - 0.5 * h; k++, t = k * h) {
-        if (do_step(inst, t, h, fmi3True, &event, &terminate, &early, &last) ||
-            get(inst, vr, n, values, total))
+        last = (k + 1) * h;
+        if ((me ? euler(&f, inst, t, h) != 0
+                : f.do_step(inst, t, h, fmi3True, &event_needed, &terminate, &early, &last) !=
+                      fmi3OK) ||
+            f.get(inst, vr, n, values, total))
             return fprintf(stderr, "FAILED: step at t = %g\n", t), 1;
         printf("%a", last);
         for (e = 0; e < total; e++) printf(" %a", values[e]);
         printf("\n");
     }
-    terminate_fn(inst);
-    free_instance(inst);
+    f.terminate(inst);
+    f.free_instance(inst);
     lib_close(lib);
     free(xml);
     return 0;
