@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Linear stability of the scene's Jacobi coupling (docs/cosimulation.md, "Stability").
+"""Linear stability of the scene's Jacobi coupling (docs/cosimulation.md, "Stability"), and of
+the half-shaft coupling (load_mode = half_shaft, half_shaft_map; docs/integration.md).
 
     python tests/cosim/coupling_stability.py [--steps 2e-3 1e-3 5e-4 1e-4] [--torques 25 150]
                                              [--start 0] [--set tooth_data=loaded ...]
@@ -112,6 +113,63 @@ def least_damped(p, h, f_min=1.0, vehicle=VEHICLE):
         mu = np.linalg.eigvals(jacobi_map(gear_system(p), vehicle_system(vehicle), h))
         lam = np.log(mu[np.abs(mu) > 0].astype(complex)) / h  # (the held inputs give mu = 0)
     lam = lam[np.abs(lam.imag) > 2 * math.pi * f_min]  # not the rigid rotation
+    k = np.argmax(lam.real)
+    return float(lam[k].real), float(abs(lam[k].imag) / (2 * math.pi))
+
+
+def half_shaft_system(p, vehicle=VEHICLE):
+    """The gear with load_mode = half_shaft: x' = A x + B w_wheel for x = (phi_s .. phi_w, their
+    speeds, the half-shaft's twist, its torque's impulse), T_hs = C x + D w_wheel."""
+    Ag, _, _ = gear_system(p)
+    k, c = vehicle["k_hs"], vehicle["c_hs"]
+    A = np.zeros((10, 10))
+    A[:8, :8] = Ag
+    A[8, 7] = 1.0                                   # twist' = w_w - w_wheel
+    A[7, 8], A[7, 7] = A[7, 8] - k / p["I_w"], A[7, 7] - c / p["I_w"]
+    A[9, 8], A[9, 7] = k, c                         # impulse' = T_hs
+    B = np.zeros((10, 1))
+    B[8, 0], B[7, 0], B[9, 0] = -1.0, c / p["I_w"], -c
+    C = np.zeros((1, 10))
+    C[0, 8], C[0, 7] = k, c
+    return A, B, C, -c
+
+
+def half_shaft_map(p, h, vehicle=VEHICLE):
+    """The one-step Jacobi map of the half-shaft coupling as the FMUs run it: the gear holds
+    w_wheel extrapolated linearly from the last two values (1.5 w_k - 0.5 w_k-1 on average over
+    the step), the vehicle holds T_wheel = 2 Tbar_k - Tbar_k-1 (the gear's mean half-shaft torque
+    over the last step, extrapolated), and integrates J_v w_wheel' = T_wheel (road load left
+    out). State: (gear x with the impulse reset each step, w_wheel, w_wheel of the step before,
+    Tbar_k, Tbar_k-1)."""
+    A, B, _, _ = half_shaft_system(p, vehicle)
+    F, G = held(A, B, h)
+    J_v = vehicle["m"] * vehicle["r_dyn"] ** 2 + vehicle["J_wheels"]
+    n = A.shape[0]
+    iw, iwp, itb, itbp = n, n + 1, n + 2, n + 3
+    P = np.zeros((n + 4, n + 4))
+    w_in = np.zeros(n + 4)
+    w_in[iw], w_in[iwp] = 1.5, -0.5
+    u = np.zeros(n + 4)
+    u[itb], u[itbp] = 2.0, -1.0
+    X = np.zeros((n, n + 4))
+    X[:, :n] = F
+    X[:, n - 1] = 0.0                                # the impulse starts from 0 each step
+    X += np.outer(G[:, 0], w_in)
+    P[:n - 1] = X[:n - 1]
+    P[iw, iw] = 1.0
+    P[iw] += u * h / J_v
+    P[iwp, iw] = 1.0
+    P[itb] = X[n - 1] / h
+    P[itbp, itb] = 1.0
+    return P
+
+
+def half_shaft_rate(p, h, vehicle=VEHICLE):
+    """(growth rate 1/s, frequency Hz) of the least damped mode of half_shaft_map, the rigid
+    rotation (eigenvalues at 1) left out."""
+    mu = np.linalg.eigvals(half_shaft_map(p, h, vehicle))
+    mu = mu[(np.abs(mu) > 1e-12) & (np.abs(mu - 1.0) > 1e-4)]
+    lam = np.log(mu.astype(complex)) / h
     k = np.argmax(lam.real)
     return float(lam[k].real), float(abs(lam[k].imag) / (2 * math.pi))
 

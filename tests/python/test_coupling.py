@@ -1,0 +1,73 @@
+"""The half-shaft coupling (load_mode = half_shaft with the vehicle's coupling 3) under a master
+that holds its inputs: a few cells of bench/coupling_matrix.py's matrix (the tip-out / tip-in
+scene with its backlash crossings at the longest steps), the one-step map's stability from 0.1 to
+20 ms, the warning for a longer step and the range check of an input that jumps. The whole
+matrix, with the torque coupling beside it, is the benchmark (docs/records/coupling-matrix.md)."""
+
+import pathlib
+import sys
+
+import pytest
+
+from hypoid.fmu.instance import FmuError, Instance
+
+from conftest import FMU_PATH
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "cosim"))
+import coupling_master as cm  # noqa: E402
+import coupling_stability as cs  # noqa: E402
+
+VEHICLE = FMU_PATH.parent / "LongitudinalVehicle.fmu"
+
+
+@pytest.fixture(scope="module")
+def tip():
+    """The tip-out / tip-in scene cut to its tip-out and backlash crossing (0.5-1.0 s)."""
+    return cm.Scene("tip", 1.0, ((0.0, 150.0), (0.6, 150.0), (0.7, -50.0), (1.0, -50.0)),
+                    100.0, 0.0)
+
+
+@pytest.mark.parametrize("h", [1e-2, 5e-3])
+def test_jacobi_holds_at_long_steps(tip, h):
+    """Jacobi with held inputs at 5 and 10 ms (the torque coupling diverges there and runs onto a
+    limit cycle at 1 ms): no limit cycle, the energy closes within 1e-3 of the input work, w_p
+    ends within 1e-3 of the reference (a fine Gauss-Seidel run with the driver's torque held as
+    the coarse run holds it)."""
+    ref = cm.run(tip, "half_shaft", "gauss-seidel", 2e-4, FMU_PATH, VEHICLE, hold=h)
+    r = cm.run(tip, "half_shaft", "jacobi", h, FMU_PATH, VEHICLE)
+    assert not r.failed, r.failed
+    m = cm.measures(r, ref, tip)
+    assert m["std_ratio"] < 1.5
+    assert abs(m["energy"]) < 1e-3
+    k = int(round(h / ref.h))
+    assert abs(r.gear["w_p"][-1] - ref.gear["w_p"][::k][len(r.t) - 1]) < 1e-3 * ref.gear["w_p"][0]
+
+
+def test_one_step_map_is_stable_from_0_1_to_20_ms():
+    """The linearised Jacobi map of the half-shaft coupling (both extrapolations, the loaded
+    gear at 150 N.m, the shipped vehicle): every mode decays at every step; the torque coupling's
+    map grows at 1 ms (its mode 2)."""
+    p = cs.gear_values({"tooth_data": "loaded"}, 0.0, 150.0)
+    for h in (1e-4, 5e-4, 1e-3, 2e-3, 5e-3, 1e-2, 2e-2):
+        rate, _ = cs.half_shaft_rate(p, h)
+        assert rate < -1.0, h
+    assert cs.least_damped(p, 1e-3, 100.0)[0] > 0.0
+
+
+def test_a_step_beyond_the_limit_is_reported_once():
+    with Instance(FMU_PATH, name="long", logging=True) as g:
+        g.start({"load_mode": 3, "mesh_model": "rigid"})
+        for _ in range(3):
+            g.step(0.05)
+        warnings = [m[2] for m in g.messages if "longer than" in m[2]]
+        assert len(warnings) == 1
+        assert "0.05 s" in warnings[0] and "0.0204" in warnings[0]
+
+
+def test_an_input_jumping_by_orders_of_magnitude_is_refused_by_name():
+    with Instance(FMU_PATH, name="jump") as g:
+        g.start({"load_mode": 3, "mesh_model": "rigid"})
+        g.step(1e-3)
+        with pytest.raises(FmuError) as e:
+            g.set("w_wheel", 7.2e4)
+        assert "w_wheel" in str(e.value) and "range" in str(e.value)
