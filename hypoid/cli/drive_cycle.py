@@ -66,9 +66,9 @@ def _parser():
                     help="a vehicle file (TOML): the car, driveline inertias, engine drag map")
     ap.add_argument("--level", choices=sorted(LEVELS),
                     help="gear FMU fidelity: map (rigid mesh, the mesh friction from the "
-                         "efficiency map; the default when the oil and the air are at 20 degC or "
-                         "warmer, the map's range), fast (the same with the friction model "
-                         "itself, ~4x dearer; the default below 20 degC) or full (the paper's "
+                         "efficiency map; the default when the oil and the air are within the "
+                         "built-in maps' range, from -30 degC), fast (the same with the friction "
+                         "model itself, ~4x dearer; the default below it) or full (the paper's "
                          "model)")
     ap.add_argument("--step", type=float, default=0.05,
                     help="communication step of the co-simulation in s (0.05)")

@@ -3,7 +3,7 @@
 
     hypoid effmap --out my_map.txt --gear-set-file my_set.txt --lubricant-file my_oil.txt
     hypoid effmap --out my_map.txt --gear-set 2 --set k_f=0.15 --speeds-rpm 500:5000:500
-    hypoid effmap --all --out-dir resources/maps            (the built-in maps, ~5 min)
+    hypoid effmap --all --out-dir resources/maps            (the built-in maps, ~8 min)
 
 Each point runs the full model (varying mesh, ehl_thermal friction unless --set says otherwise)
 at a held pinion speed, a pinion torque and a bath temperature, in drive (T_s > 0) and coast

@@ -6,14 +6,14 @@ the levels, the default for the oil and air temperatures and the data files give
 from hypoid.errors import UsageError
 from hypoid.fmu import levels as fmu_levels
 from hypoid.fmu.values import TABLE
-from hypoid.maps.effmap import TEMPERATURES_C, builtin_map_fits
+from hypoid.maps.effmap import builtin_map_fits, builtin_map_range
 
 ZERO_C = 273.15
 
 # The fidelity levels of the gear FMU for vehicle energy, levels of hypoid.fmu.levels at the
-# tolerance each runs at here: map, the pick for oil at 20 degC or warmer, the rigid mesh with
-# the mesh friction from the full model's efficiency map (resources/maps, 20-130 degC; the
-# default); fast (the rigid level), the pick for cold starts below 20 degC, the rigid mesh with
+# tolerance each runs at here: map, the pick for oil and air within the built-in maps' range
+# (MAP_T_MIN), the rigid mesh with the mesh friction from the full model's efficiency map
+# (resources/maps; the default); fast (the rigid level), the pick below it, the rigid mesh with
 # the friction model itself; full: the paper's model.
 LEVELS = {
     "fast": {**fmu_levels.LEVELS["rigid"], "rtol": 1e-4},
@@ -21,9 +21,10 @@ LEVELS = {
     "full": {**fmu_levels.LEVELS["full"], "rtol": 1e-6},
 }
 
-# The map level's lowest oil temperature: the built-in maps' (hypoid effmap's grid). Below it the
-# map holds its 20 degC edge, so a cycle that starts or can cool below it runs the fast level.
-MAP_T_MIN = min(TEMPERATURES_C) + ZERO_C
+# The map level's lowest oil temperature: the shipped built-in maps' (hypoid effmap's grid when
+# they were made; -30 degC since the grid reaches it). Below it the map holds its edge, so a
+# cycle that starts or can cool below it runs the fast level.
+MAP_T_MIN = builtin_map_range()[0]
 
 # What a --set parameter reaches at each level (docs/axle.md, "Which level a --set reaches"):
 # the map level takes the mesh friction from a map made with the default friction and gear data

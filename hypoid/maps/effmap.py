@@ -18,7 +18,8 @@ from hypoid.tca.gearset_file import read_gearset
 MAGIC = "hypoid-effmap 2"
 SPEEDS_RPM = [100, 250, 500, 1000, 1500, 2000, 3000, 4000, 5000, 6000]
 TORQUES = [10, 25, 50, 100, 200, 300, 400]
-TEMPERATURES_C = [20, 40, 70, 100, 130]
+# from a cold start in winter (the EU's -7 degC test, -20 and -30 degC) to a hot axle's sump
+TEMPERATURES_C = [-30, -15, 0, 20, 40, 70, 100, 130, 150]
 QUICK_GRID = ([500, 2000, 4000], [50, 100, 200], [40, 100])
 # The elastic transient decays with 1/(zeta_2 omega_2) = 30 ms (docs/physics.md): 0.15 s
 # settles it; the steady state repeats every 3 mesh cycles (the load-share period), so a window
@@ -85,6 +86,24 @@ def builtin_gear_set(params):
     """The resources' gear-set file of the built-in gear_set for these parameters."""
     folder = "gearsets/" if paper_tooth_data(params) else "gearsets/loaded/"
     return f"{folder}gearset{params.get('gear_set', 1)}.txt"
+
+
+BUILTIN_MAPS = pathlib.Path(__file__).resolve().parents[2] / "resources" / "maps"
+
+
+def map_temperatures(path):
+    """The bath temperatures [K] of a map file (its 'temperatures' line)."""
+    for line in pathlib.Path(path).read_text().splitlines():
+        if line.startswith("temperatures "):
+            return [float(x) for x in line.split("#")[0].split()[1:]]
+    raise ValueError(f"{path}: no 'temperatures' line")
+
+
+def builtin_map_range():
+    """(lowest, highest) bath temperature [K] that every built-in map covers, read from the
+    shipped maps (so the map level follows the maps as they were made, not this grid)."""
+    spans = [map_temperatures(p) for p in sorted(BUILTIN_MAPS.glob("gearset*_*.txt"))]
+    return max(t[0] for t in spans), min(t[-1] for t in spans)
 
 
 def builtin_map_fits(params):

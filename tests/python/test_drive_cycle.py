@@ -288,8 +288,11 @@ def test_the_default_level_is_the_map_level_within_the_maps_range():
     assert levels.MAP_T_MIN == pytest.approx(min(float(x) for x in line.split("#")[0]
                                                      .split()[1:]))
     assert levels.default_level(293.15, [293.15, 353.15], {}) == "map"
-    assert levels.default_level(278.15, [293.15], {}) == "fast"
-    assert levels.default_level(293.15, [283.15, 353.15], {}) == "fast"
+    # the maps reach -30 degC: the EU's -7 degC cold start and -20 degC run the map level
+    assert levels.default_level(266.15, [266.15, 353.15], {}) == "map"
+    assert levels.default_level(253.15, [253.15], {}) == "map"
+    assert levels.default_level(233.15, [293.15], {}) == "fast"
+    assert levels.default_level(293.15, [233.15, 353.15], {}) == "fast"
     assert levels.default_level(293.15, [293.15], {"gear_set_file": "my_set.txt"}) == "fast"
     assert levels.default_level(293.15, [293.15], {"lubricant_file": "my_oil.txt"}) == "fast"
 
@@ -321,7 +324,7 @@ def test_a_set_parameter_moves_the_default_level_to_one_it_reaches():
     own = {"tau_0": 3e6, "efficiency_map_file": "my_map.txt"}
     assert levels.choose_level(None, *hot, own) == ("map", None)
     # below the maps' range the default is fast already: no note
-    assert levels.choose_level(None, 278.15, [278.15], {"tau_0": 3e6}) == ("fast", None)
+    assert levels.choose_level(None, 233.15, [233.15], {"tau_0": 3e6}) == ("fast", None)
 
 
 @pytest.mark.parametrize("level, name, value, words", [

@@ -128,3 +128,27 @@ def test_bad_options_are_one_line(fmu_path, tmp_path, capsys, args, words):
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and all(w in err for w in words), err
     assert not (tmp_path / "m.txt").exists()
+
+
+def test_builtin_maps_reach_cold_starts(fmu_path):
+    """Before, the built-in maps started at 20 degC and a -7 degC start fell to the fast level.
+    Every shipped map spans hypoid effmap's default grid, -30 to 150 degC, and its -15 degC
+    column is what the full model gives there now (the maps are not stale)."""
+    import math
+
+    from hypoid.drivecycle import levels
+
+    for path in sorted((ROOT / "resources" / "maps").glob("gearset*_*.txt")):
+        K = effmap.map_temperatures(path)
+        assert K == pytest.approx([c + 273.15 for c in effmap.TEMPERATURES_C]), path.name
+    assert effmap.builtin_map_range() == pytest.approx((243.15, 423.15))
+    assert levels.default_level(266.15, [266.15], {}) == "map"  # the EU's -7 degC test
+    text = (ROOT / "resources" / "maps" / "gearset1_OS265962.txt").read_text()
+    k_T = effmap.TEMPERATURES_C.index(-15)
+    i_n, i_T = effmap.SPEEDS_RPM.index(1000), effmap.TORQUES.index(100)
+    row = next(x for x in text.splitlines() if x.startswith(f"drive.{k_T + 1} "))
+    shipped = float(row.split()[1 + i_n * len(effmap.TORQUES) + i_T])
+    with Instance(fmu_path) as inst:
+        got = effmap.efficiency_point(inst, {"gear_set": 1, "lubricant": 1},
+                                      1000 * math.pi / 30, 100.0, 258.15, False)["eta"]
+    assert got == pytest.approx(shipped, abs=1e-8)
