@@ -1,6 +1,21 @@
-"""Reading the tables people export from spreadsheets: the cell separator (',' or, in locales
-with a decimal comma, ';' or a tab) and numbers written with a decimal comma. Used by the TCA
-importer and the drive cycle's CSV reader."""
+"""Reading the files people write for the tools: tables exported from spreadsheets (the cell
+separator ',' or, in locales with a decimal comma, ';' or a tab, and numbers with a decimal
+comma; the TCA importer, the drive cycle's CSV reader) and TOML files (the vehicle file, the
+design file), each failure one message naming the file."""
+
+import pathlib
+import tomllib
+
+
+def read_toml(path, where, error):
+    """The TOML file's tables; a file that cannot be read or is not TOML raises error(one line
+    starting with `where`)."""
+    try:
+        return tomllib.loads(pathlib.Path(path).read_text())
+    except (OSError, UnicodeDecodeError) as e:
+        raise error(f"{where}: cannot read it ({e})") from None
+    except tomllib.TOMLDecodeError as e:
+        raise error(f"{where}: not TOML ({e})") from None
 
 
 def delimiter(lines):

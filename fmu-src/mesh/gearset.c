@@ -51,6 +51,34 @@ static int read_teeth(const hg_datafile *f, const char *key, int *N, char *err, 
     return 0;
 }
 
+/* blank.*: all eight keys or none; lengths within 1 mm .. 5 m, angles within (0, pi/2) rad. */
+static int read_blank(const hg_datafile *f, hg_gearset *g, char *err, size_t errlen)
+{
+    static const char *const names[HG_N_BLANK] = {"ring_d", "ring_b", "r_m_p", "r_m_g",
+                                                  "delta_p", "delta_g", "beta_p", "beta_g"};
+    char key[32];
+    int k, given = 0;
+    for (k = 0; k < HG_N_BLANK; k++) {
+        snprintf(key, sizeof key, "blank.%s", names[k]);
+        given += hg_datafile_count(f, key) >= 0;
+    }
+    if (given == 0) return 0;
+    for (k = 0; k < HG_N_BLANK; k++) {
+        int angle = k >= HG_BLANK_DELTA_P;
+        snprintf(key, sizeof key, "blank.%s", names[k]);
+        if (hg_datafile_count(f, key) < 0) {
+            hg_errorf(err, errlen, "key '%s' missing: the blank keys go together (blank.ring_d, "
+                      "ring_b, r_m_p, r_m_g [m], delta_p, delta_g, beta_p, beta_g [rad])", key);
+            return -1;
+        }
+        if (hg_datafile_number(f, key, angle ? 1e-6 : 1e-3, angle ? 1.5707 : 5.0,
+                               angle ? "rad" : "m", &g->blank[k], err, errlen))
+            return -1;
+    }
+    g->has_blank = 1;
+    return 0;
+}
+
 /* torque_levels: pinion torques [N m], non-negative and increasing; absent: one level. */
 static int read_levels(const char *path, const hg_datafile *f, hg_gearset *g, char *err,
                        size_t errlen)
@@ -230,7 +258,7 @@ int hg_gearset_load(const char *path, hg_gearset *g, char *err, size_t errlen)
     layered = hg_datafile_count(f, "torque_levels") >= 0 || hg_datafile_count(f, "flanks") >= 0;
     if (hg_datafile_text(f, "name", g->name, sizeof g->name, err, errlen) ||
         read_teeth(f, "N_p", &g->N_p, err, errlen) || read_teeth(f, "N_g", &g->N_g, err, errlen) ||
-        read_levels(path, f, g, err, errlen) || read_flanks(path, f, g, err, errlen) ||
+        read_blank(f, g, err, errlen) || read_levels(path, f, g, err, errlen) || read_flanks(path, f, g, err, errlen) ||
         read_series(f, "", "e_0", &g->e_0, err, errlen) ||
         read_blocks(f, layered, g, err, errlen) || hg_datafile_check_all_used(f, err, errlen))
         goto done;

@@ -25,9 +25,19 @@ typedef struct {
     hg_series y[HG_N_SERIES];
 } hg_flank_series;
 
+/* The gear blank of the axle's loss ledger (optional keys 'blank.<name>', docs/data-files.md):
+ * ring gear pitch diameter and face width, mean pitch radii of pinion and gear [m]; pitch angles
+ * and mean spiral angles of pinion and gear [rad]. */
+enum {
+    HG_BLANK_RING_D, HG_BLANK_RING_B, HG_BLANK_R_M_P, HG_BLANK_R_M_G, HG_BLANK_DELTA_P,
+    HG_BLANK_DELTA_G, HG_BLANK_BETA_P, HG_BLANK_BETA_G, HG_N_BLANK
+};
+
 typedef struct {
     char name[128];
     int N_p, N_g;
+    int has_blank;                 /* 1 when the file gives the blank (all eight keys) */
+    double blank[HG_N_BLANK];      /* in the order of the enum, m and rad */
     hg_series e_0;                 /* unloaded static transmission error, one cycle [m]: it
                                       defines x, so both flanks and all torques share it */
     int n_levels;                  /* 1 for a file without torque_levels */

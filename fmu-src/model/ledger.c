@@ -6,6 +6,7 @@
 #include "axle/seals.h"
 #include "io/constants.h"
 #include "io/errmsg.h"
+#include "mesh/gearset.h"
 #include "tribo/rheology.h"
 
 #define DEG (HG_PI / 180.0)
@@ -29,39 +30,50 @@ static const builtin_blank BLANKS[3] = {
     {107.80e-3, 36.50e-3, 28.10e-3, 82.26e-3, 22.74, 66.70, 40.00, 26.62},
 };
 
-/* a parameter left at 0 takes the built-in set's value; for a user file it must be set */
-static int blank_value(const char *name, double given, double builtin, int set, double *out,
+/* a parameter left at 0 takes the blank of the built-in set or of the gear-set file (`have`);
+ * a user's file without blank.* keys needs it set */
+static int blank_value(const char *name, double given, double fallback, int have, double *out,
                        char *err, size_t errlen)
 {
     if (given > 0.0) {
         *out = given;
         return 0;
     }
-    if (!set) {
+    if (!have) {
         hg_errorf(err, errlen, "axle_losses = full with a gear_set_file needs the gear blank: "
-                  "set %s (it is 0, i.e. 'from the built-in gear set')", name);
+                  "set %s (it is 0, i.e. 'from the gear set'), or give the file the blank.* "
+                  "keys (hypoid tca import --blank ..., docs/data-files.md)", name);
         return -1;
     }
-    *out = builtin;
+    *out = fallback;
     return 0;
 }
 
-static int blank(hg_ledger *a, const hg_vars *v, int set, char *err, size_t errlen)
+static int blank(hg_ledger *a, const hg_vars *v, int set, const double *file_blank, char *err,
+                 size_t errlen)
 {
     const builtin_blank *b = &BLANKS[set ? set - 1 : 0];
+    double d[HG_N_BLANK] = {2.0 * b->A_e2 * sin(b->delta_g * DEG), b->ring_b, b->r_m_p, b->r_m_g,
+                            b->delta_p * DEG, b->delta_g * DEG, b->beta_p * DEG,
+                            b->beta_g * DEG};
+    int have = set || file_blank, k;
     double ring_d;
-    if (blank_value("ring_d [m]", v->ring_d, 2.0 * b->A_e2 * sin(b->delta_g * DEG), set, &ring_d, err,
+    if (!set && file_blank)
+        for (k = 0; k < HG_N_BLANK; k++) d[k] = file_blank[k];
+    if (blank_value("ring_d [m]", v->ring_d, d[HG_BLANK_RING_D], have, &ring_d, err, errlen) ||
+        blank_value("ring_b [m]", v->ring_b, d[HG_BLANK_RING_B], have, &a->churn.b, err,
                     errlen) ||
-        blank_value("ring_b [m]", v->ring_b, b->ring_b, set, &a->churn.b, err, errlen) ||
-        blank_value("r_m_p [m]", v->r_m_p, b->r_m_p, set, &a->pinion.r_m, err, errlen) ||
-        blank_value("r_m_g [m]", v->r_m_g, b->r_m_g, set, &a->gear.r_m, err, errlen) ||
-        blank_value("delta_p [rad]", v->delta_p, b->delta_p * DEG, set, &a->pinion.delta, err,
+        blank_value("r_m_p [m]", v->r_m_p, d[HG_BLANK_R_M_P], have, &a->pinion.r_m, err,
                     errlen) ||
-        blank_value("delta_g [rad]", v->delta_g, b->delta_g * DEG, set, &a->gear.delta, err,
+        blank_value("r_m_g [m]", v->r_m_g, d[HG_BLANK_R_M_G], have, &a->gear.r_m, err, errlen) ||
+        blank_value("delta_p [rad]", v->delta_p, d[HG_BLANK_DELTA_P], have, &a->pinion.delta,
+                    err, errlen) ||
+        blank_value("delta_g [rad]", v->delta_g, d[HG_BLANK_DELTA_G], have, &a->gear.delta, err,
                     errlen) ||
-        blank_value("beta_p [rad]", v->beta_p, b->beta_p * DEG, set, &a->pinion.beta, err,
+        blank_value("beta_p [rad]", v->beta_p, d[HG_BLANK_BETA_P], have, &a->pinion.beta, err,
                     errlen) ||
-        blank_value("beta_g [rad]", v->beta_g, b->beta_g * DEG, set, &a->gear.beta, err, errlen))
+        blank_value("beta_g [rad]", v->beta_g, d[HG_BLANK_BETA_G], have, &a->gear.beta, err,
+                    errlen))
         return -1;
     a->churn.R_p = 0.5 * ring_d;
     a->pinion.alpha_n = a->gear.alpha_n = v->alpha_n;
@@ -138,7 +150,7 @@ static int bearings(hg_ledger *a, const hg_vars *v, char *err, size_t errlen)
 }
 
 int hg_ledger_setup(hg_ledger *a, const hg_vars *v, int gear_set_builtin,
-                    const hg_lubricant *lub, char *err, size_t errlen)
+                    const double *file_blank, const hg_lubricant *lub, char *err, size_t errlen)
 {
     a->full = v->axle_losses == HG_AXLE_LOSSES_FULL;
     a->sump = v->thermal_model == HG_THERMAL_MODEL_SUMP;
@@ -149,7 +161,8 @@ int hg_ledger_setup(hg_ledger *a, const hg_vars *v, int gear_set_builtin,
     a->h_housing = v->h_housing;
     a->C_sump = v->C_sump;
     if (!a->full) return 0;
-    if (blank(a, v, gear_set_builtin, err, errlen) || bearings(a, v, err, errlen)) return -1;
+    if (blank(a, v, gear_set_builtin, file_blank, err, errlen) || bearings(a, v, err, errlen))
+        return -1;
     if (pair_geometry("pinion", "brg_ph_x", v->brg_ph_x, "brg_pt_x", v->brg_pt_x, err, errlen))
         return -1;
     a->T_seal_p = hg_seal_torque(v->d_seal_p);

@@ -41,10 +41,12 @@ typedef struct {
 } hg_ledger_eval;
 
 /* Fills *a from the parameters of v; gear_set_builtin is the built-in set (1-3) whose geometry
- * stands in for parameters left at 0, or 0 for a user's gear-set file (then they must be set).
- * Returns 0, or -1 with a message naming the variable, its value and unit. */
+ * stands in for parameters left at 0, or 0 for a user's gear-set file, whose blank (file_blank,
+ * HG_N_BLANK values in the order of mesh/gearset.h; NULL when the file has none) stands in for
+ * them, else they must be set. Returns 0, or -1 with a message naming the variable, its value
+ * and unit. */
 int hg_ledger_setup(hg_ledger *a, const hg_vars *v, int gear_set_builtin,
-                    const hg_lubricant *lub, char *err, size_t errlen);
+                    const double *file_blank, const hg_lubricant *lub, char *err, size_t errlen);
 
 /* Oil density [kg/m^3] and kinematic viscosity [m^2/s] at T [K]. */
 double hg_ledger_rho(const hg_lubricant *lub, double T);

@@ -366,8 +366,8 @@ int hg_setup_load(hg_setup *s, const char *resource_dir, const hg_logger *lg, hg
     if (load_map(s, resource_dir, v, err, errlen)) return -1;
     if (damping(s, lg, v, err, errlen)) return -1;
     hg_plausibility_warn(v, lg);
-    if (hg_ledger_setup(&s->p.ledger, v, v->gear_set_file[0] ? 0 : v->gear_set, &s->lub, err,
-                        errlen))
+    if (hg_ledger_setup(&s->p.ledger, v, v->gear_set_file[0] ? 0 : v->gear_set,
+                        s->gear.has_blank ? s->gear.blank : NULL, &s->lub, err, errlen))
         return -1;
     v->R_p0 = s->p.R_p0;
     v->k_m0 = s->p.k_m0;

@@ -26,12 +26,11 @@ Unknown sections or keys, a non-positive mass, radius or CdA, a grade beyond +-3
 are refused with one line naming the file, the key and the value."""
 
 import math
-import pathlib
-import tomllib
 from dataclasses import dataclass, field
 
 import numpy as np
 
+from hypoid import csvtext
 from hypoid.errors import UsageError
 
 R_AIR = 287.05           # J/(kg K), dry air (ISO 2533)
@@ -197,12 +196,7 @@ def _engine(where, table, engine):
 def read_vehicle_file(path, known):
     """A Vehicle from a TOML vehicle file (the module's docstring)."""
     where = f"--vehicle {path}"
-    try:
-        data = tomllib.loads(pathlib.Path(path).read_text())
-    except (OSError, UnicodeDecodeError) as e:
-        raise UsageError(f"{where}: cannot read it ({e})") from None
-    except tomllib.TOMLDecodeError as e:
-        raise UsageError(f"{where}: not TOML ({e})") from None
+    data = csvtext.read_toml(path, where, UsageError)
     sections = ("vehicle", "driveline", "engine", "air")
     for key, value in data.items():
         if key not in sections or not isinstance(value, dict):

@@ -41,6 +41,13 @@ class Series:
         return self.mean + np.sin(arg) @ self.sin + np.cos(arg) @ self.cos
 
 
+# The gear blank of the axle's loss ledger (optional 'blank.<name>' keys, all or none): the FMU's
+# parameters of the same names stand in for them when given; lengths in m, angles in rad.
+BLANK = ("ring_d", "ring_b", "r_m_p", "r_m_g", "delta_p", "delta_g", "beta_p", "beta_g")
+BLANK_UNITS = {k: ("rad" if k.startswith(("delta", "beta")) else "m") for k in BLANK}
+BLANK_RANGE = {"m": (1e-3, 5.0), "rad": (1e-6, 1.5707)}  # as the FMU checks them
+
+
 class GearsetFileError(ValueError):
     """A gear-set file breaks docs/data-files.md; the message names the file and line."""
 
@@ -58,6 +65,7 @@ class Gearset:
     torque_levels: tuple = ()  # layered file: pinion torque of each level [N·m]
     flanks: tuple = ()  # layered file: ("drive",) or ("drive", "coast")
     layers: dict = field(default_factory=dict)  # {(flank, level 1..n): {series: Series}}
+    blank: dict = field(default_factory=dict)  # {BLANK name: value in m or rad}, or empty
 
     @property
     def layered(self):
@@ -81,6 +89,9 @@ def format_gearset(gs):
     lines = [f"# {c}" if c else "#" for c in gs.comments]
     name = " ".join(gs.name.replace("#", " ").split())  # one line, no comment sign
     lines += [MAGIC, f"name {name}", f"N_p {gs.N_p}", f"N_g {gs.N_g}"]
+    if gs.blank:
+        lines += ["", "# the gear blank for the axle's loss ledger (m, rad)"]
+        lines += [f"blank.{k} {_number(gs.blank[k])}" for k in BLANK]
     if not gs.layered:
         for key in MESH_SERIES + PAIR_SERIES:
             if key in gs.series:  # the optional vc may be absent
@@ -120,14 +131,40 @@ def read_gearset(path):
     if not name:
         raise GearsetFileError(f"{path}: missing key 'name'")
     N_p, N_g = (_teeth(path, entries, key) for key in ("N_p", "N_g"))
+    blank = _blank(path, entries)
     if "torque_levels" in entries or "flanks" in entries:
         gs = _layered(path, entries, name, N_p, N_g)
     else:
         gs = Gearset(name, N_p, N_g, _present(path, entries, "", MESH_SERIES + PAIR_SERIES))
+    gs.blank = blank
     if entries:
         key, (line, _) = next(iter(entries.items()))
         raise GearsetFileError(f"{path}, line {line}: unknown key '{key}'")
     return gs
+
+
+def check_blank(where, blank):
+    """A blank {name: value}: all eight names, each in its range; raises GearsetFileError."""
+    missing = [k for k in BLANK if k not in blank]
+    if missing:
+        raise GearsetFileError(f"{where}: blank.{missing[0]} missing: the blank keys go together "
+                               f"({', '.join(BLANK)})")
+    for k in BLANK:
+        lo, hi = BLANK_RANGE[BLANK_UNITS[k]]
+        if not lo <= blank[k] <= hi:
+            raise GearsetFileError(f"{where}: blank.{k} = {blank[k]:g} {BLANK_UNITS[k]} outside "
+                                   f"{lo:g} ... {hi:g} {BLANK_UNITS[k]}")
+    return blank
+
+
+def _blank(path, entries):
+    given = {k: _numbers(path, entries, f"blank.{k}") for k in BLANK if f"blank.{k}" in entries}
+    if not given:
+        return {}
+    for k, (line, values) in given.items():
+        if len(values) != 1:
+            raise GearsetFileError(f"{path}, line {line}: 'blank.{k}' must be one number")
+    return check_blank(path, {k: v[0] for k, (_, v) in given.items()})
 
 
 def _layered(path, entries, name, N_p, N_g):

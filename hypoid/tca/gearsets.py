@@ -1,6 +1,7 @@
 """Gear-set files from the surrogate TCA of the paper's gear sets (docs/physics.md §10), one
-series or both flanks at several torques (§10.8), and the surrogate written as a TCA table. The
-command is `hypoid tca` (hypoid/cli/tca.py)."""
+series or both flanks at several torques (§10.8), the same for a design of one's own
+(hypoid/tca/design.py), and the surrogate written as a TCA table. The command is `hypoid tca`
+(hypoid/cli/tca.py)."""
 
 import csv
 import math
@@ -109,13 +110,15 @@ def loaded_samples(model, torque, n_cycle=N_SAMPLES // 3):
 
 
 def loaded_surrogate(set_no, torques=tl.TORQUES, harmonics=CONTACT_HARMONICS,
-                     contact_harmonics=CONTACT_HARMONICS):
-    """A layered gear-set file of set `set_no`: drive and coast flanks at each pinion torque.
-    The loaded series change steeply where a pair starts to carry load, so k_m, R_p and ls take
-    as many harmonics as the contact series by default."""
+                     contact_harmonics=CONTACT_HARMONICS, blank=None, name=None):
+    """A layered gear-set file of set `set_no` (or of `blank`, a design of one's own, with its
+    `name`): drive and coast flanks at each pinion torque. The loaded series change steeply where
+    a pair starts to carry load, so k_m, R_p and ls take as many harmonics as the contact series
+    by default."""
     if not 1 <= len(torques) <= MAX_LEVELS or any(b <= a for a, b in zip(torques, torques[1:])):
         raise ValueError(f"--torques: 1 to {MAX_LEVELS} increasing values, not {list(torques)}")
-    blank, layers, notes, reliefs = sur.TABLE_1[set_no], {}, {}, []
+    own = blank is not None
+    blank, layers, notes, reliefs = blank if own else sur.TABLE_1[set_no], {}, {}, []
     for flank in tl.FLANKS:
         model = tl.LoadedFlank(tl.flank_set(blank, flank))
         reliefs.append(f"{model.C_a * 1e6:.2f}")
@@ -132,11 +135,18 @@ def loaded_surrogate(set_no, torques=tl.TORQUES, harmonics=CONTACT_HARMONICS,
     gs = sur.GearSet(blank)
     relief_amounts = "/".join(reliefs)
     relief_lengths = f"{model.xi_relief * (gs.s_roll[1] - gs.s_roll[0]) * 1e3:.2f}"
-    name = (f"Paouris et al. 2016 gear set {set_no} ({blank.N_p}/{blank.N_g}), loaded surrogate "
-            "TCA, drive and coast")
-    comments = _surrogate_comments(set_no, gs, harmonics, contact_harmonics)[:2] + [
-        "regenerate with `hypoid tca surrogate --all --loaded --out-dir resources/gearsets/loaded`,"
-        " do not edit.", "Units SI (m, N/m, rad); series format in docs/data-files.md.",
+    name = (f"{name} ({blank.N_p}/{blank.N_g}), loaded surrogate TCA, drive and coast" if own
+            else f"Paouris et al. 2016 gear set {set_no} ({blank.N_p}/{blank.N_g}), loaded "
+            "surrogate TCA, drive and coast")
+    head = ([f"Gear set {name} from its design data through the surrogate tooth contact analysis",
+             "of docs/physics.md §10 (hypoid tca design; assumptions in hypoid/tca/design.py)."]
+            if own else _surrogate_comments(set_no, gs, harmonics, contact_harmonics)[:2])
+    comments = head + [
+        ("regenerate with `hypoid tca design`, do not edit." if own else
+         "regenerate with `hypoid tca surrogate --all --loaded --out-dir resources/gearsets/loaded`,"
+         " do not edit."), "Units SI (m, N/m, rad); series format in docs/data-files.md.",
+        *([line.replace("Table 1:", "Design data:") for line in
+           _surrogate_comments(set_no, gs, harmonics, contact_harmonics)[5:-4]] if own else []),
         "", "Loaded tooth contact (§10.8): secant k_m at W = torque/mean R_p, load shares, R_p per level, both",
         "  flanks (coast: alpha_nC = alpha_e - alpha_lim); e_0 the unloaded transmission error; lengthwise "
         f"ease-off {sur.DELTA_END * 1e6:g} um;",
@@ -187,4 +197,16 @@ def export_csv(set_no, path, speed_rpm=2000.0, rows=360):
             out.writerow(["" if math.isnan(v) else f"{v:.10g}" for v in row])
 
 
-# --- command line --------------------------------------------------------------------------------
+# --- a design of one's own -----------------------------------------------------------------------
+
+def design_gearset(path, torques=tl.TORQUES, harmonics=CONTACT_HARMONICS):
+    """The layered two-flank gear-set file of a design file (hypoid/tca/design.py), with its
+    ledger blank."""
+    from hypoid.tca.design import read_design
+
+    blank, name, hand = read_design(path)
+    gs = loaded_surrogate(None, tuple(torques), harmonics, harmonics, blank=blank, name=name)
+    if hand:
+        gs.comments.append(f"Pinion hand of spiral {hand} (the surrogate is the same for either).")
+    gs.blank = sur.blank_of(blank)
+    return gs

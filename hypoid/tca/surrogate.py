@@ -54,6 +54,21 @@ TABLE_1 = {
 }
 
 
+def ledger_blank(n):
+    """The gear blank the FMU's loss ledger needs (gear-set file keys blank.*, m and rad) of
+    Table 1's set n: ring pitch diameter 2 R_e2 sin(delta_2), ring face width b_2, mean pitch
+    radii (§10.1's closed form), pitch and mean spiral angles."""
+    return blank_of(TABLE_1[n])
+
+
+def blank_of(bl):
+    """ledger_blank's values of any Blank."""
+    g = GearSet(bl)
+    return {"ring_d": 2.0 * bl.R_e2 * math.sin(bl.delta_2), "ring_b": bl.b_2, "r_m_p": g.r_m1,
+            "r_m_g": g.r_m2, "delta_p": bl.delta_1, "delta_g": bl.delta_2, "beta_p": bl.beta_m1,
+            "beta_g": bl.beta_m2}
+
+
 @dataclass(frozen=True)
 class GearSet:
     """Derived geometry (§10.1–10.5) of one Table 1 gear set; every quantity computed on demand."""
