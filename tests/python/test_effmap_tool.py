@@ -151,4 +151,5 @@ def test_builtin_maps_reach_cold_starts(fmu_path):
     with Instance(fmu_path) as inst:
         got = effmap.efficiency_point(inst, {"gear_set": 1, "lubricant": 1},
                                       1000 * math.pi / 30, 100.0, 258.15, False)["eta"]
-    assert got == pytest.approx(shipped, abs=1e-8)
+    # the file keeps 8 decimals; a physics change that matters moves a map by 1e-4 and more
+    assert got == pytest.approx(shipped, abs=1e-6)
