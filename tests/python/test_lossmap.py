@@ -68,7 +68,8 @@ def test_report_section_prints_a_map_whose_numbers_obey_the_identity(lm):
 
 def test_report_write_includes_the_section(tmp_path, lm, monkeypatch):
     """report.write puts the loss-map section into report.md (the other sections stubbed)."""
-    for name in ("_header", "_torque_section", "_jump_section", "_engagement_section"):
+    for name in ("_header", "_torque_section", "_jump_section", "_engagement_section",
+                 "settings_section"):
         monkeypatch.setattr(report, name, lambda *a, **k: [])
     monkeypatch.setattr(report, "health", lambda *a, **k: "")
     monkeypatch.setattr(report.tb, "prepare", lambda df: df)
