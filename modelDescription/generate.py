@@ -442,7 +442,8 @@ def write_xml3(spec, path):
         'needsExecutionTool="false" canBeInstantiatedOnlyOncePerProcess="false" '
         'canGetAndSetFMUState="true" canSerializeFMUState="true" '
         'providesDirectionalDerivative="false" providesAdjointDerivatives="false" '
-        'canHandleVariableCommunicationStepSize="true" maxOutputDerivativeOrder="0" '
+        'canHandleVariableCommunicationStepSize="true" '
+        f'maxOutputDerivativeOrder="{1 if spec.states else 0}" '
         'providesIntermediateUpdate="false" mightReturnEarlyFromDoStep="false" '
         'canReturnEarlyAfterIntermediateUpdate="false" hasEventMode="false" '
         'providesEvaluateDiscreteStates="false"/>',

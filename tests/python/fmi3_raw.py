@@ -199,9 +199,18 @@ def cases(h):
         return [h.call("fmi3EnterEventMode", ready)]
 
     @case
-    def get_output_derivatives(ready):
+    def output_derivative_second_order(ready):
         return [h.call("fmi3GetOutputDerivatives", ready, vrs(v["w_p"]), 1,
+                       values(c_int32, 2), f64(0.0), 1)]
+
+    @case
+    def output_derivative_of_no_state(ready):
+        return [h.call("fmi3GetOutputDerivatives", ready, vrs(v["eta"]), 1,
                        values(c_int32, 1), f64(0.0), 1)]
+
+    @case
+    def output_derivative_null_orders(ready):
+        return [h.call("fmi3GetOutputDerivatives", ready, vrs(v["w_p"]), 1, None, f64(0.0), 1)]
 
     @case
     def model_exchange_function(ready):

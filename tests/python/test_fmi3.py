@@ -246,3 +246,27 @@ def test_model_exchange_states_and_serialization(fmu3, md3, tmp_path):
         m.freeFMUState(s)
         m.terminate()
         m.freeInstance()
+
+
+def test_output_derivatives_are_the_states_derivatives(fmu3, md3, tmp_path):
+    """fmi3GetOutputDerivatives (order 1) of the shaft-end speeds a host extrapolates: der(w_s),
+    der(w_w) of the model, close to the slope of the next small step."""
+    vr = {v.name: v.valueReference for v in md3.modelVariables}
+    assert md3.coSimulation.maxOutputDerivativeOrder == 1
+    s = make(fmu3, md3, tmp_path)
+    s.enterInitializationMode()
+    s.exitInitializationMode()
+    t, h = 0.0, 1e-4
+    for _ in range(50):
+        s.doStep(t, h)
+        t += h
+    names = ["w_s", "w_w", "w_p"]
+    der = s.getOutputDerivatives([vr[n] for n in names], [1, 1, 1])
+    assert der == s.getFloat64([vr[f"der({n})"] for n in names])
+    ends = [vr["w_s"], vr["w_w"]]  # the shaft ends a driveline couples to
+    before = s.getFloat64(ends)
+    s.doStep(t, 1e-7)
+    slope = (np.array(s.getFloat64(ends)) - before) / 1e-7
+    assert np.allclose(der[:2], slope, rtol=1e-2, atol=1.0)
+    s.terminate()
+    s.freeInstance()
