@@ -1,5 +1,6 @@
 /* A thin FMI 2.0 co-simulation layer around vehicle_model.c: instance, state machine, variable
- * access, stepping, FMU states (get, set, serialize: iterative masters roll the vehicle back).
+ * access, stepping, FMU states (get, set, serialize: iterative masters roll the vehicle back);
+ * Model Exchange's functions are in fmi2_vehicle_me.c.
  * No global state: everything lives in the instance. Directional derivatives and input
  * derivatives are not supported (the modelDescription says so) and return fmi2Error. */
 #include <math.h>
@@ -8,42 +9,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "fmi2Functions.h"
-#include "vehicle_model.h"
+#include "vehicle_instance.h"
 
 #define GUID "{6b1f3c52-2d8e-4f0a-9c57-1e0b7a4d9e21}"
 
-typedef enum {
-    ST_INSTANTIATED = 1,
-    ST_INIT = 2,
-    ST_STEP_COMPLETE = 4,
-    ST_TERMINATED = 8,
-    ST_ERROR = 16
-} vm_state;
-
-enum { CAT_WARNING, CAT_ERROR, CAT_ALL, N_CATEGORIES };
 static const char *const category_names[N_CATEGORIES] = {"logStatusWarning", "logStatusError",
                                                          "logAll"};
 
-typedef struct {
-    char *name;
-    fmi2CallbackLogger logger;
-    fmi2ComponentEnvironment env;
-    int log_on[N_CATEGORIES];
-    vm_state state;
-    double start_time;
-    int stop_defined;
-    double stop_time;
-    vm_model model;
-} vm_instance;
-
-static void logf_(vm_instance *c, fmi2Status status, int cat, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 4, 5)))
-#endif
-    ;
-
-static void logf_(vm_instance *c, fmi2Status status, int cat, const char *fmt, ...)
+void logf_(vm_instance *c, fmi2Status status, int cat, const char *fmt, ...)
 {
     char msg[512], escaped[1024], *o = escaped;
     const char *s;
@@ -60,23 +33,22 @@ static void logf_(vm_instance *c, fmi2Status status, int cat, const char *fmt, .
     c->logger(c->env, c->name, status, category_names[cat], escaped);
 }
 
-/* Logs an error, puts the instance into the error state and returns fmi2Error. */
-static fmi2Status fail(vm_instance *c, const char *fn, const char *why)
+fmi2Status fail(vm_instance *c, const char *fn, const char *why)
 {
     c->state = ST_ERROR;
     logf_(c, fmi2Error, CAT_ERROR, "%s: %s", fn, why);
     return fmi2Error;
 }
 
-/* 1 when fn may be called in the instance's state; else logs (without changing the state). */
-static int allowed(vm_instance *c, const char *fn, int states)
+int allowed(vm_instance *c, const char *fn, int states)
 {
     static const char *const names[] = {"instantiated", "initialization mode", "step complete",
-                                        "terminated", "error"};
+                                        "terminated", "error", "event mode",
+                                        "continuous-time mode"};
     int k = 0;
     if (!c) return 0;
     if ((int)c->state & states) return 1;
-    while (k < 4 && !(c->state & (1 << k))) k++;
+    while (k < 6 && !(c->state & (1 << k))) k++;
     logf_(c, fmi2Error, CAT_ERROR, "%s: not allowed in state %s", fn, names[k]);
     return 0;
 }
@@ -121,11 +93,13 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
     fmi2ComponentEnvironment env = cb ? cb->componentEnvironment : NULL;
     (void)resource_location;
     (void)visible;
-    if (!name || !*name || type != fmi2CoSimulation || !guid || strcmp(guid, GUID) != 0) {
+    int known = type == fmi2CoSimulation || type == fmi2ModelExchange;
+    if (!name || !*name || !known || !guid || strcmp(guid, GUID) != 0) {
         if (logger)
             logger(env, name ? name : "?", fmi2Error, "logStatusError",
-                   type != fmi2CoSimulation ? "fmi2Instantiate: only co-simulation is supported"
-                                            : "fmi2Instantiate: missing name or wrong GUID");
+                   !known ? "fmi2Instantiate: fmuType is neither fmi2ModelExchange nor "
+                            "fmi2CoSimulation"
+                          : "fmi2Instantiate: missing name or wrong GUID");
         return NULL;
     }
     c = calloc(1, sizeof *c);
@@ -140,6 +114,7 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
     c->env = env;
     c->log_on[CAT_WARNING] = c->log_on[CAT_ERROR] = logging_on != fmi2False;
     c->state = ST_INSTANTIATED;
+    c->model_exchange = type == fmi2ModelExchange;
     vm_reset(&c->model, 0.0);
     return c;
 }
@@ -186,15 +161,18 @@ fmi2Status fmi2ExitInitializationMode(fmi2Component comp)
     if (!allowed(c, "fmi2ExitInitializationMode", ST_INIT)) return fmi2Error;
     if ((why = vm_check_parameters(&c->model)) != NULL)
         return fail(c, "fmi2ExitInitializationMode", why);
+    if (c->model_exchange && c->model.v[VR_COUPLING] == VM_ROAD_LOAD)
+        return fail(c, "fmi2ExitInitializationMode", "coupling = 2 (road load) is co-simulation "
+                    "only: its acceleration is a difference quotient over the communication step");
     vm_initial_state(&c->model);
-    c->state = ST_STEP_COMPLETE;
+    c->state = c->model_exchange ? ST_EVENT : ST_STEP_COMPLETE;
     return fmi2OK;
 }
 
 fmi2Status fmi2Terminate(fmi2Component comp)
 {
     vm_instance *c = comp;
-    if (!allowed(c, "fmi2Terminate", ST_STEP_COMPLETE)) return fmi2Error;
+    if (!allowed(c, "fmi2Terminate", ST_RUNNING)) return fmi2Error;
     c->state = ST_TERMINATED;
     return fmi2OK;
 }
@@ -202,7 +180,7 @@ fmi2Status fmi2Terminate(fmi2Component comp)
 fmi2Status fmi2Reset(fmi2Component comp)
 {
     vm_instance *c = comp;
-    if (!allowed(c, "fmi2Reset", ST_INSTANTIATED | ST_INIT | ST_STEP_COMPLETE | ST_TERMINATED |
+    if (!allowed(c, "fmi2Reset", ST_INSTANTIATED | ST_INIT | ST_RUNNING | ST_TERMINATED |
                                      ST_ERROR))
         return fmi2Error;
     vm_reset(&c->model, 0.0);
@@ -236,7 +214,7 @@ fmi2Status fmi2GetReal(fmi2Component comp, const fmi2ValueReference vr[], size_t
 {
     vm_instance *c = comp;
     size_t i;
-    if (!allowed(c, "fmi2GetReal", ST_INIT | ST_STEP_COMPLETE | ST_TERMINATED | ST_ERROR))
+    if (!allowed(c, "fmi2GetReal", ST_INIT | ST_RUNNING | ST_TERMINATED | ST_ERROR))
         return fmi2Error;
     if (!check_refs(c, "fmi2GetReal", vr, n, value)) return fmi2Error;
     if (c->state == ST_INIT) vm_initial_state(&c->model); /* outputs follow the parameters */
@@ -250,16 +228,15 @@ fmi2Status fmi2SetReal(fmi2Component comp, const fmi2ValueReference vr[], size_t
 {
     vm_instance *c = comp;
     size_t i;
-    if (!allowed(c, "fmi2SetReal", ST_INSTANTIATED | ST_INIT | ST_STEP_COMPLETE)) return fmi2Error;
+    if (!allowed(c, "fmi2SetReal", ST_INSTANTIATED | ST_INIT | ST_RUNNING)) return fmi2Error;
     if (!check_refs(c, "fmi2SetReal", vr, n, value)) return fmi2Error;
     for (i = 0; i < n; i++) {
         if (!vm_settable((int)vr[i])) {
-            logf_(c, fmi2Error, CAT_ERROR, "fmi2SetReal: value reference %u is an output",
-                  (unsigned)vr[i]);
+            logf_(c, fmi2Error, CAT_ERROR, "fmi2SetReal: value reference %u is an output or a "
+                  "derivative (computed by the FMU)", (unsigned)vr[i]);
             return fmi2Error;
         }
-        if (vr[i] >= VM_FIRST_PARAMETER && vr[i] < VM_FIRST_OUTPUT &&
-            c->state == ST_STEP_COMPLETE) {
+        if (vr[i] >= VM_FIRST_PARAMETER && vr[i] < VM_FIRST_OUTPUT && (c->state & ST_RUNNING)) {
             logf_(c, fmi2Error, CAT_ERROR, "fmi2SetReal: parameter %u is fixed after "
                   "initialization", (unsigned)vr[i]);
             return fmi2Error;
@@ -286,8 +263,8 @@ static fmi2Status no_variables(fmi2Component comp, const char *fn, size_t n, int
     return fmi2OK;
 }
 
-#define GET_STATES (ST_INIT | ST_STEP_COMPLETE | ST_TERMINATED | ST_ERROR)
-#define SET_STATES (ST_INSTANTIATED | ST_INIT | ST_STEP_COMPLETE)
+#define GET_STATES (ST_INIT | ST_RUNNING | ST_TERMINATED | ST_ERROR)
+#define SET_STATES (ST_INSTANTIATED | ST_INIT | ST_RUNNING)
 
 fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t n,
                           fmi2Integer value[])
@@ -354,6 +331,7 @@ static fmi2Status unsupported(fmi2Component comp, const char *fn)
 typedef struct {
     vm_model model;
     vm_state state;
+    int model_exchange; /* of the instance it was taken from */
     double start_time, stop_time;
     int stop_defined;
 } vm_snapshot;
@@ -371,6 +349,7 @@ static void snapshot_take(const vm_instance *c, vm_snapshot *s)
 {
     s->model = c->model;
     s->state = c->state;
+    s->model_exchange = c->model_exchange;
     s->start_time = c->start_time;
     s->stop_time = c->stop_time;
     s->stop_defined = c->stop_defined;
@@ -380,7 +359,7 @@ fmi2Status fmi2GetFMUstate(fmi2Component comp, fmi2FMUstate *out)
 {
     vm_instance *c = comp;
     vm_snapshot *s;
-    if (!allowed(c, "fmi2GetFMUstate", ST_INIT | ST_STEP_COMPLETE | ST_TERMINATED)) return fmi2Error;
+    if (!allowed(c, "fmi2GetFMUstate", ST_INIT | ST_RUNNING | ST_TERMINATED)) return fmi2Error;
     if (!out) return refuse(c, "fmi2GetFMUstate", "NULL state pointer");
     s = *out ? (vm_snapshot *)*out : malloc(sizeof *s); /* a given state is overwritten */
     if (!s) return refuse(c, "fmi2GetFMUstate", "out of memory");
@@ -393,10 +372,12 @@ fmi2Status fmi2SetFMUstate(fmi2Component comp, fmi2FMUstate in)
 {
     vm_instance *c = comp;
     const vm_snapshot *s = in;
-    if (!allowed(c, "fmi2SetFMUstate", ST_INSTANTIATED | ST_INIT | ST_STEP_COMPLETE |
-                                           ST_TERMINATED))
+    if (!allowed(c, "fmi2SetFMUstate", ST_INSTANTIATED | ST_INIT | ST_RUNNING | ST_TERMINATED))
         return fmi2Error;
     if (!s) return refuse(c, "fmi2SetFMUstate", "NULL state");
+    if (s->model_exchange != c->model_exchange)
+        return refuse(c, "fmi2SetFMUstate", "the state was taken from an instance of the other "
+                      "interface (Model Exchange / co-simulation)");
     c->model = s->model;
     c->state = s->state;
     c->start_time = s->start_time;

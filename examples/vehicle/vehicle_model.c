@@ -28,6 +28,9 @@ static const double start_values[VM_NUM_VARS] = {
 
 int vm_settable(int vr) { return vr < VM_FIRST_OUTPUT || vr == VR_T_WHEEL; }
 
+const int vm_state_vr[VM_NUM_STATES] = {VR_TWIST, VR_W_WHEEL, VR_X, VR_E_IN, VR_E_ROAD,
+                                        VR_E_DAMPER, VR_E_BRAKE};
+
 void vm_reset(vm_model *m, double t0)
 {
     memcpy(m->v, start_values, sizeof m->v);
@@ -134,6 +137,8 @@ static void rhs(const double *p, const double *s, double *ds)
     ds[S_E_BRAKE] = t_b * w;
 }
 
+void vm_derivatives(const vm_model *m, double *ds) { rhs(m->v, m->s, ds); }
+
 void vm_step(vm_model *m, double h)
 {
     const double *p = m->v;
@@ -187,4 +192,5 @@ void vm_outputs(vm_model *m)
     v[VR_E_GRADE] = f_grade * s[S_X];
     v[VR_E_DAMPER] = s[S_E_DAMPER];
     v[VR_E_BRAKE] = s[S_E_BRAKE];
+    memcpy(&v[VR_DER_TWIST], ds, sizeof ds); /* the derivatives, in the states' order */
 }

@@ -39,13 +39,18 @@ enum {
     VR_E_SPRING, VR_E_ROAD, VR_E_GRADE, VR_E_DAMPER, VR_E_BRAKE,
     /* input of coupling 3, after the others so that their value references stay */
     VR_T_WHEEL,
+    /* Model Exchange: the time derivatives of the states (locals), in the order of the states */
+    VR_DER_TWIST, VR_DER_W_WHEEL, VR_DER_X, VR_DER_E_IN, VR_DER_E_ROAD, VR_DER_E_DAMPER,
+    VR_DER_E_BRAKE,
     VM_NUM_VARS
 };
 #define VM_FIRST_PARAMETER VR_M
 #define VM_FIRST_OUTPUT VR_T_HS
 
-/* States of the integrator. */
+/* States of the integrator; in Model Exchange the continuous states, each the output
+ * vm_state_vr[k] (half-shaft and wheel-torque couplings; road load is co-simulation only). */
 enum { S_TWIST, S_W_WHEEL, S_X, S_E_IN, S_E_ROAD, S_E_DAMPER, S_E_BRAKE, VM_NUM_STATES };
+extern const int vm_state_vr[VM_NUM_STATES];
 
 /* values of the parameter coupling */
 enum { VM_HALF_SHAFT = 1, VM_ROAD_LOAD = 2, VM_WHEEL_TORQUE = 3 };
@@ -72,7 +77,10 @@ void vm_initial_state(vm_model *m);
 /* Advances the states by h with the input held; updates time and the outputs. */
 void vm_step(vm_model *m, double h);
 
-/* Recomputes the outputs from the states and the current input. */
+/* Recomputes the outputs (and the states' derivatives) from the states and the current input. */
 void vm_outputs(vm_model *m);
+
+/* The states' time derivatives at the current states and inputs (Model Exchange). */
+void vm_derivatives(const vm_model *m, double *ds);
 
 #endif
