@@ -46,9 +46,11 @@ build-asan/run_fmu build-asan/fmu simulate 0.01 me
 build-asan/run_fmu build-asan/fmu threads 3 0.005 me
 cc -std=c99 -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all \
    -Wall -Wextra -Werror -I"$(sed -n 's/^FMI3_INCLUDE_DIR:PATH=//p' build-asan/CMakeCache.txt)" \
-   tests/host/run_fmu3.c -o build-asan/run_fmu3 -ldl
+   tests/host/run_fmu3.c -o build-asan/run_fmu3 -ldl -lpthread
 build-asan/run_fmu3 build-asan/fmu_fmi3 0.05 0.001 >/dev/null
 build-asan/run_fmu3 build-asan/fmu_fmi3 0.0002 1e-6 me >/dev/null
+build-asan/run_fmu3 build-asan/fmu_fmi3 0.01 0.001 threads 3
+build-asan/run_fmu3 build-asan/fmu_fmi3 0.0001 1e-6 me threads 3
 
 echo "sanitize: fmpy in Python with libasan preloaded (leaks not checked in Python)"
 libasan=$(cc -print-file-name=libasan.so)

@@ -141,8 +141,8 @@ fmi3() {
   rm -rf "$dir" && python3 -m zipfile -e "$fmu" "$dir"
   [ -f "$dir/binaries/x86_64-windows/HypoidGearPair.dll" ] \
     || { echo "win64: FAILED - $fmu has no binaries/x86_64-windows/HypoidGearPair.dll" >&2; exit 1; }
-  $triple-gcc "${flags[@]}" tests/host/run_fmu3.c -o "$win/run_fmu3.exe" -static
-  cc "${flags[@]}" tests/host/run_fmu3.c -o "$win/run_fmu3_linux" -ldl
+  $triple-gcc "${flags[@]}" tests/host/run_fmu3.c -o "$win/run_fmu3.exe" -static -lpthread
+  cc "${flags[@]}" tests/host/run_fmu3.c -o "$win/run_fmu3_linux" -ldl -lpthread
   local run what
   for run in "0.1 0.001" "0.001 1e-6 me"; do
     what="co-simulation, 100 steps"

@@ -4,8 +4,11 @@
  * by h from the default start values and prints every Float64 output (arrays element by element)
  * as hexadecimal floating point (%a, exact) at each step's end. With "me": Model Exchange, explicit
  * Euler steps of h with an event where an event indicator changes sign or the FMU asks for one.
+ * With "threads N": the run alone, then N instances at once on N threads, each of which must end
+ * with the same bits.
  *
- *   run_fmu3 FMU_DIR T h [me] */
+ *   run_fmu3 FMU_DIR T h [me] [threads N] */
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -171,22 +174,102 @@ static int euler(const fns *f, fmi3Instance inst, double t, double h)
     return crossed || enter ? event(f, inst, 1) : 0;
 }
 
+/* One run: instantiate, initialise, steps of h up to t_end; prints each step's outputs (print)
+ * or keeps the last ones in values. */
+typedef struct {
+    const fns *f;
+    const char *token, *resources;
+    const fmi3ValueReference *vr;
+    size_t n, total;
+    double t_end, h;
+    int me, print, rc;
+    double values[4 * MAX_OUT];
+} job;
+
+static int run(job *j)
+{
+    const fns *f = j->f;
+    double t = 0.0;
+    size_t k, e;
+    fmi3Boolean event_needed, terminate, early;
+    fmi3Float64 last;
+    fmi3Instance inst =
+        j->me ? f->instantiate_me("run_fmu3", j->token, j->resources, fmi3False, fmi3False, NULL,
+                                  logger)
+              : f->instantiate_cs("run_fmu3", j->token, j->resources, fmi3False, fmi3False,
+                                  fmi3False, fmi3False, NULL, 0, NULL, logger, NULL);
+    if (!inst || f->enter(inst, fmi3False, 0.0, 0.0, fmi3False, 0.0) || f->exit_init(inst) ||
+        (j->me && event(f, inst, 0)))
+        return fprintf(stderr, "FAILED: initialization\n"), -1;
+    for (k = 0; t < j->t_end - 0.5 * j->h; k++, t = k * j->h) {
+        last = (k + 1) * j->h;
+        if ((j->me ? euler(f, inst, t, j->h) != 0
+                   : f->do_step(inst, t, j->h, fmi3True, &event_needed, &terminate, &early,
+                                &last) != fmi3OK) ||
+            f->get(inst, j->vr, j->n, j->values, j->total))
+            return fprintf(stderr, "FAILED: step at t = %g\n", t), -1;
+        if (!j->print) continue;
+        printf("%a", last);
+        for (e = 0; e < j->total; e++) printf(" %a", j->values[e]);
+        printf("\n");
+    }
+    f->terminate(inst);
+    f->free_instance(inst);
+    return 0;
+}
+
+static void *run_thread(void *arg)
+{
+    job *j = arg;
+    j->rc = run(j);
+    return NULL;
+}
+
+/* n_threads instances at once, each on its own thread: every one must end with the outputs of
+ * the same run alone. */
+static int threads(const job *alone, int n_threads)
+{
+    job jobs[16];
+    pthread_t tid[16];
+    int k, bad = 0;
+    if (n_threads < 1 || n_threads > 16) return fprintf(stderr, "FAILED: 1..16 threads\n"), -1;
+    for (k = 0; k < n_threads; k++) {
+        jobs[k] = *alone;
+        if (pthread_create(&tid[k], NULL, run_thread, &jobs[k]))
+            return fprintf(stderr, "FAILED: pthread_create\n"), -1;
+    }
+    for (k = 0; k < n_threads; k++) pthread_join(tid[k], NULL);
+    for (k = 0; k < n_threads; k++)
+        bad |= jobs[k].rc ||
+               memcmp(jobs[k].values, alone->values, alone->total * sizeof *alone->values);
+    if (bad) return fprintf(stderr, "FAILED: a thread's outputs differ from the run alone\n"), -1;
+    printf("run_fmu3 threads: %d %s instances on %d threads, outputs bit-identical to the run "
+           "alone\n", n_threads, alone->me ? "Model Exchange" : "co-simulation", n_threads);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     char path[4096], token[128], resources[4096];
     char *xml;
     void *lib;
     fmi3ValueReference vr[MAX_OUT];
-    size_t count[MAX_OUT], n, k, e, total = 0;
-    double t = 0.0, t_end, h, values[4 * MAX_OUT];
-    fmi3Instance inst;
-    fmi3Boolean event_needed, terminate, early;
-    fmi3Float64 last;
+    size_t count[MAX_OUT], n, k, total = 0;
     fns f;
-    int me = argc == 5 && strcmp(argv[4], "me") == 0;
-    if (argc != 4 && !me) return fprintf(stderr, "usage: run_fmu3 FMU_DIR T h [me]\n"), 2;
-    t_end = atof(argv[2]);
-    h = atof(argv[3]);
+    job j;
+    int n_threads = 0, rc;
+    memset(&j, 0, sizeof j);
+    for (k = 4; k < (size_t)argc; k++) {
+        if (strcmp(argv[k], "me") == 0)
+            j.me = 1;
+        else if (strcmp(argv[k], "threads") == 0 && k + 1 < (size_t)argc)
+            n_threads = atoi(argv[++k]);
+        else
+            argc = 0;
+    }
+    if (argc < 4) return fprintf(stderr, "usage: run_fmu3 FMU_DIR T h [me] [threads N]\n"), 2;
+    j.t_end = atof(argv[2]);
+    j.h = atof(argv[3]);
     snprintf(path, sizeof path, "%s" SEP "modelDescription.xml", argv[1]);
     if (!(xml = read_file(path)) || attribute(strstr(xml, "<fmiModelDescription"),
                                               "instantiationToken=\"", token, sizeof token))
@@ -198,26 +281,15 @@ int main(int argc, char **argv)
     snprintf(resources, sizeof resources, "%s" SEP "resources" SEP, argv[1]);
     if (!(lib = lib_open(path))) return fprintf(stderr, "FAILED: cannot load %s\n", path), 1;
     if (load(&f, lib)) return 1;
-    inst = me ? f.instantiate_me("run_fmu3", token, resources, fmi3False, fmi3False, NULL, logger)
-              : f.instantiate_cs("run_fmu3", token, resources, fmi3False, fmi3False, fmi3False,
-                                 fmi3False, NULL, 0, NULL, logger, NULL);
-    if (!inst || f.enter(inst, fmi3False, 0.0, 0.0, fmi3False, 0.0) || f.exit_init(inst) ||
-        (me && event(&f, inst, 0)))
-        return fprintf(stderr, "FAILED: initialization\n"), 1;
-    for (k = 0; t < t_end - 0.5 * h; k++, t = k * h) {
-        last = (k + 1) * h;
-        if ((me ? euler(&f, inst, t, h) != 0
-                : f.do_step(inst, t, h, fmi3True, &event_needed, &terminate, &early, &last) !=
-                      fmi3OK) ||
-            f.get(inst, vr, n, values, total))
-            return fprintf(stderr, "FAILED: step at t = %g\n", t), 1;
-        printf("%a", last);
-        for (e = 0; e < total; e++) printf(" %a", values[e]);
-        printf("\n");
-    }
-    f.terminate(inst);
-    f.free_instance(inst);
+    j.f = &f;
+    j.token = token;
+    j.resources = resources;
+    j.vr = vr;
+    j.n = n;
+    j.total = total;
+    j.print = n_threads == 0;
+    rc = run(&j) || (n_threads && threads(&j, n_threads));
     lib_close(lib);
     free(xml);
-    return 0;
+    return rc ? 1 : 0;
 }
