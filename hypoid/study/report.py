@@ -150,13 +150,16 @@ def differing_defaults():
 
 
 def _at_defaults(pts):
-    """Rows that ran every reference setting at the FMU's default instead of the paper's."""
-    if pts.empty:
-        return pts
+    """Rows that ran every reference setting at the FMU's default instead of the paper's (none
+    from a table without the columns that say so)."""
+    needed = [n for n, _, _ in differing_defaults()] + ["gear_set", "lubricant", "T_s",
+                                                        "speed_rpm", "T_bath", "eta_rms",
+                                                        "P_loss_mean_W"]
+    if pts.empty or any(c not in pts for c in needed):
+        return pts.iloc[0:0]
     mask = np.ones(len(pts), bool)
     for name, _, default in differing_defaults():
-        if name in pts:
-            mask &= pts[name].astype(str).to_numpy() == str(default)
+        mask &= pts[name].astype(str).to_numpy() == str(default)
     return pts[mask]
 
 

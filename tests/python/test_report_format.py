@@ -104,3 +104,6 @@ def test_the_report_says_which_settings_made_the_tables_and_gives_the_defaults_f
     assert "99.310" in text and "98.720" in text  # both figures, side by side
     assert "268.3" in text and "145.0" in text
     assert {n for n, _, _ in report.differing_defaults()} >= {"tooth_data", "roelands_z"}
+    # a table without those columns (a loss map's, a sweep's) gets the settings, no comparison
+    bare = "\n".join(report.settings_section(pd.DataFrame([{"gear_set": 1, "T_s": 100.0}])))
+    assert "Settings behind the tables" in bare and "FMU defaults [%]" not in bare
