@@ -63,7 +63,8 @@ def record(rows, steps, scenes, provenance):
                "over each step of the column. Every input held over the step (no input "
                "derivatives); fmpy's FMU2Slave in tests/cosim/coupling_master.py. `before`: the "
                "FMUs before the half-shaft coupling (the gear's torque load mode against the "
-               "vehicle's half-shaft coupling 1)."}]
+               "vehicle's half-shaft coupling 1); the iterative master could not run them (the vehicle "
+               "FMU had no FMU states)."}]
     for scene in scenes:
         keys = sorted({(r["coupling"], r["master"], r["host"]) for r in rows
                        if r["scene"] == scene},
