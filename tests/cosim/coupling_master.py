@@ -289,3 +289,36 @@ def measures(r, ref, scene):
                energy=res / scale if scale > 0 else 0.0)
     out["stable"] = out["std_ratio"] <= 1.5
     return out
+
+
+def run_libcosim(scene, coupling, h, gear_fmu, vehicle_fmu):
+    """The scene in libcosim's fixed-step (Jacobi) algorithm: the integer-coded gear FMU
+    (gear_fmu: <name>_intenum.fmu), the links of the coupling, T_s through the override
+    manipulator at the profile's mean over each step. libcosim gives outputs after a step only:
+    the row of t = 0 is left out (the returned Run starts at t = h)."""
+    from hypoid.cosim.libcosim import Execution
+    ex = Execution(h)
+    ex.add("gear", gear_fmu)
+    ex.add("vehicle", vehicle_fmu)
+    gs, vs = _start_values(scene, coupling)
+    ex.initial("gear", gs)
+    ex.initial("vehicle", vs)
+    for src, out, dst, inp in COUPLINGS[coupling]["links"]:
+        ex.connect(src, out, dst, inp)
+    refs = {"gear": [ex.ref("gear", v) for v in GEAR_OUT],
+            "vehicle": [ex.ref("vehicle", v) for v in VEHICLE_OUT]}
+    n = int(round(scene.stop_time / h))
+    r = Run(coupling, "jacobi", h, scene.name, t=np.arange(1, n + 1) * h, T_s=np.empty(n))
+    rows = {"gear": [], "vehicle": []}
+    cpu = time.process_time()
+    for k in range(n):
+        r.T_s[k] = scene.mean_torque(k * h, h)
+        ex.set_reals("gear", ["T_s"], [r.T_s[k]])
+        ex.step()
+        for side in rows:
+            rows[side].append(list(ex.reals(side, refs[side])))
+    r.cpu = time.process_time() - cpu
+    r.gear = {v: np.array([row[j] for row in rows["gear"]]) for j, v in enumerate(GEAR_OUT)}
+    r.vehicle = {v: np.array([row[j] for row in rows["vehicle"]])
+                 for j, v in enumerate(VEHICLE_OUT)}
+    return r

@@ -71,3 +71,16 @@ def test_an_input_jumping_by_orders_of_magnitude_is_refused_by_name():
         with pytest.raises(FmuError) as e:
             g.set("w_wheel", 7.2e4)
         assert "w_wheel" in str(e.value) and "range" in str(e.value)
+
+
+def test_libcosim_runs_the_half_shaft_coupling_as_the_fmpy_master(tip):
+    """libcosim's fixed-step algorithm (the integer-coded gear FMU, load_mode = 3) with the same
+    links: the same run as the fmpy Jacobi master to round-off (measured 1.2e-11 of w_p at 10 ms,
+    9.9e-12 at 1 ms in the full tip scene)."""
+    h = 1e-2
+    a = cm.run(tip, "half_shaft", "jacobi", h, FMU_PATH, VEHICLE)
+    b = cm.run_libcosim(tip, "half_shaft", h, FMU_PATH.parent / "HypoidGearPair_intenum.fmu",
+                        VEHICLE)
+    for name in ("w_p", "W_t"):
+        scale = max(abs(a.gear[name]))
+        assert max(abs(a.gear[name][1:] - b.gear[name])) < 1e-9 * scale, name
