@@ -29,7 +29,8 @@ GROUPS = {  # TOML group -> (causality, variability, initial)
     "derivative": ("local", "continuous", "calculated"),  # der(state)
 }
 COMPUTED = ("output", "calculated", "state", "derivative")  # the groups without a start value
-STATES_SET = "states"  # the output set of the states' own variables and the derivatives
+STATES_SET = "states"  # the output set of the local states' values: a copy of the state
+DERIVATIVES_SET = "derivatives"  # the output set of the derivatives: the right-hand side
 BASE_TYPES = ("Real", "Integer", "Boolean", "String")
 C_TYPES = {"Real": "double", "Integer": "int", "Boolean": "int", "String": "char *"}
 # The communication step hosts are proposed (DefaultExperiment): the half-shaft coupling holds
@@ -61,6 +62,7 @@ class Spec:
             for item in data.get(group, []):
                 self._add(group, item)
         self.states = []  # (y name, index of the state's variable, index of its derivative)
+        self.reports = {}  # index of a local state's variable: index of the output it reports
         self._add_states(data.get("state", []))
 
     def _add_states(self, items):
@@ -68,7 +70,7 @@ class Spec:
         then the derivative of each, value references after every other variable."""
         if not items:
             return
-        self.output_sets.append(STATES_SET)
+        self.output_sets += [STATES_SET, DERIVATIVES_SET]
         index = {v["name"]: i for i, v in enumerate(self.vars)}
         for item in items:
             if item.get("output"):
@@ -79,12 +81,17 @@ class Spec:
             local = {k: v for k, v in item.items() if k in ("name", "unit", "description")}
             self._add("state", dict(local, set=STATES_SET))
             self.states.append([item["y"], len(self.vars) - 1, None])
+            if "reports" in item:
+                if item["reports"] not in index or \
+                        self.vars[index[item["reports"]]]["group"] != "output":
+                    sys.exit(f"variables.toml: state {item['name']}: reports no output")
+                self.reports[len(self.vars) - 1] = index[item["reports"]]
         for state, item in zip(self.states, items):
             v = self.vars[state[1]]
             field = "der_" + v["field"]
             self.fields.append(("double", field, 0))
             self.vars.append(dict(name=f"der({v['name']})", group="derivative", typ="Real",
-                                  base="Real", start=None, field=field, set=STATES_SET,
+                                  base="Real", start=None, field=field, set=DERIVATIVES_SET,
                                   unit=item["der_unit"], derivative=state[1] + 1,
                                   description=f"time derivative of {v['name']}"))
             state[2] = len(self.vars) - 1
@@ -543,14 +550,21 @@ def c_states_header(spec):
             f"#define HG_NUM_EVENT_INDICATORS {spec.event_indicators()}",
             f"#define HG_STATE_ORDER_OK ({order or 1})",
             "extern const unsigned hg_state_vr[HG_NUM_STATES];",
-            "extern const unsigned hg_derivative_vr[HG_NUM_STATES];", ""]
+            "extern const unsigned hg_derivative_vr[HG_NUM_STATES];",
+            "/* The output each state gives (its own variable, or the output a local state",
+            " * reports), HG_NUM_VARS for none: the outputs whose derivative is the state's. */",
+            "extern const unsigned hg_state_output_vr[HG_NUM_STATES];", ""]
 
 
 def c_states_source(spec):
     return ["const unsigned hg_state_vr[HG_NUM_STATES] = {"
             + ", ".join(str(s) for _, s, _ in spec.states) + "};",
             "const unsigned hg_derivative_vr[HG_NUM_STATES] = {"
-            + ", ".join(str(d) for _, _, d in spec.states) + "};", ""]
+            + ", ".join(str(d) for _, _, d in spec.states) + "};",
+            "const unsigned hg_state_output_vr[HG_NUM_STATES] = {"
+            + ", ".join(str(s if spec.vars[s]["group"] == "output"
+                            else spec.reports.get(s, len(spec.vars))) for _, s, _ in spec.states)
+            + "};", ""]
 
 
 def write_c(spec, directory):

@@ -26,12 +26,13 @@ fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 t, fmi3Float64 h,
     return (fmi3Status)status;
 }
 
-/* The value reference of der(vr) when output vr is a continuous state, else -1 (after logging). */
+/* The value reference of der(vr) when output vr gives a continuous state (hg_state_output_vr),
+ * else -1 (after logging). */
 static long derivative_of(hg_instance *c, const char *fn, fmi3ValueReference vr, fmi3Int32 order)
 {
     int k;
     for (k = 0; k < HG_NUM_STATES && vr < HG_NUM_VARS; k++)
-        if (hg_state_vr[k] == vr && hg_var_table[vr].causality == HG_OUTPUT) break;
+        if (hg_state_output_vr[k] == vr) break;
     if (vr >= HG_NUM_VARS || k == HG_NUM_STATES) {
         hg_error(c, fn, "value reference %u%s%s%s is not an output with a derivative (those "
                  "that are continuous states: the speeds, DTE, the energies)", (unsigned)vr,

@@ -116,7 +116,9 @@ static void write_outputs(hg_model *m, hg_vars *v, int set)
         /* the same unless restored or failed: a restart */
         m->s.p.tables = hg_ftp_of_state(m->tables, &m->rt, &m->s, &m->log);
         if (set == HG_OUTSET_STATES)
-            hg_outputs_states(&m->s, &m->rt, v);
+            hg_outputs_states(&m->rt, v);
+        else if (set == HG_OUTSET_DERIVATIVES)
+            hg_outputs_derivatives(&m->s, &m->rt, v);
         else
             hg_outputs_main(&m->s, &m->rt, steps, evals, v);
     }

@@ -118,7 +118,16 @@ void hg_outputs_main(const hg_setup *s, const hg_runtime *rt, long steps, long e
     write_energy(s, rt->y, &ev, v);
 }
 
-void hg_outputs_states(const hg_setup *s, const hg_runtime *rt, hg_vars *v)
+void hg_outputs_states(const hg_runtime *rt, hg_vars *v)
+{
+    int k;
+    for (k = 0; k < HG_NY; k++) {
+        const hg_var_info *info = &hg_var_table[hg_state_vr[k]];
+        if (info->causality == HG_LOCAL) *(double *)hg_var_ptr(v, info) = rt->y[k];
+    }
+}
+
+void hg_outputs_derivatives(const hg_setup *s, const hg_runtime *rt, hg_vars *v)
 {
     hg_dyn_eval ev;
     hg_inputs u;
@@ -127,10 +136,8 @@ void hg_outputs_states(const hg_setup *s, const hg_runtime *rt, hg_vars *v)
     evaluate(s, rt, 0, &ev);
     hg_stepping_inputs_at(rt, rt->t, &u);
     hg_dyn_derivatives(&s->p, &u, rt->y, &ev, ydot);
-    for (k = 0; k < HG_NY; k++) {
-        *(double *)hg_var_ptr(v, &hg_var_table[hg_state_vr[k]]) = rt->y[k];
+    for (k = 0; k < HG_NY; k++)
         *(double *)hg_var_ptr(v, &hg_var_table[hg_derivative_vr[k]]) = ydot[k];
-    }
 }
 
 void hg_outputs_pairs(const hg_setup *s, const hg_runtime *rt, hg_vars *v)

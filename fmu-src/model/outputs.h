@@ -16,8 +16,12 @@ void hg_outputs_main(const hg_setup *s, const hg_runtime *rt, long steps, long e
  * P_loss needs the main outputs of v to be current. */
 void hg_outputs_pairs(const hg_setup *s, const hg_runtime *rt, hg_vars *v);
 
-/* Fills the continuous states' own variables and every state's derivative in v (variables.toml's
- * [[state]]: hg_state_vr, hg_derivative_vr) as the right-hand side computes them. */
-void hg_outputs_states(const hg_setup *s, const hg_runtime *rt, hg_vars *v);
+/* Fills the continuous states' own (local) variables in v (variables.toml's [[state]],
+ * hg_state_vr): the state vector's values, without evaluating the model (the states that are
+ * outputs are the main set's). */
+void hg_outputs_states(const hg_runtime *rt, hg_vars *v);
+
+/* Fills every state's derivative in v (hg_derivative_vr) as the right-hand side computes it. */
+void hg_outputs_derivatives(const hg_setup *s, const hg_runtime *rt, hg_vars *v);
 
 #endif

@@ -129,6 +129,7 @@ int host_load(fmu_lib *f, const char *so_path)
         ME_SYM(get_continuous_states, "fmi2GetContinuousStates");
         ME_SYM(get_derivatives, "fmi2GetDerivatives");
         ME_SYM(get_event_indicators, "fmi2GetEventIndicators");
+        ME_SYM(get_nominals, "fmi2GetNominalsOfContinuousStates");
 #undef ME_SYM
         return 0;
     }
@@ -226,9 +227,9 @@ int host_read_info(fmu_info *m, const char *dir)
     }
     snprintf(m->so_path, sizeof m->so_path, "%s/binaries/" HOST_PLATFORM "/%s" HOST_LIB_SUFFIX,
              dir, id);
-    snprintf(path, sizeof path, "%s/resources", dir);
-    if (absolute_path(path, real_dir) || !(m->resource_uri = file_uri(real_dir))) {
-        fprintf(stderr, "fmu_host: no resources folder in %s\n", dir);
+    snprintf(path, sizeof path, "%s/resources", dir); /* none: a NULL resource location */
+    if (!absolute_path(path, real_dir) && !(m->resource_uri = file_uri(real_dir))) {
+        fprintf(stderr, "fmu_host: out of memory\n");
         return -1;
     }
     if ((p = strstr(m->xml, "<Derivatives>")) != NULL) {

@@ -50,6 +50,7 @@ typedef struct {
     fmi2GetContinuousStatesTYPE *get_continuous_states;
     fmi2GetDerivativesTYPE *get_derivatives;
     fmi2GetEventIndicatorsTYPE *get_event_indicators;
+    fmi2GetNominalsOfContinuousStatesTYPE *get_nominals;
 } fmu_lib;
 
 /* What the host reads from the model description. */
