@@ -22,8 +22,8 @@ static int me_call(vm_instance *c, const char *fn, int states)
 static int array_ok(vm_instance *c, const char *fn, const void *a, size_t n, size_t n_model)
 {
     if (a && n == n_model) return 1;
-    logf_(c, fmi2Error, CAT_ERROR, "%s: %s (%zu values given, this FMU has %zu)", fn,
-          a ? "wrong array size" : "NULL array", n, n_model);
+    logf_(c, fmi2Error, CAT_ERROR, "%s: %s (%lu values given, this FMU has %lu)", fn,
+          a ? "wrong array size" : "NULL array", (unsigned long)n, (unsigned long)n_model);
     return 0;
 }
 
@@ -93,8 +93,8 @@ fmi2Status fmi2SetContinuousStates(fmi2Component comp, const fmi2Real x[], size_
         return fmi2Error;
     for (k = 0; k < nx; k++)
         if (!isfinite(x[k])) {
-            logf_(c, fmi2Error, CAT_ERROR, "fmi2SetContinuousStates: state %zu = %g is not "
-                  "finite", k, x[k]);
+            logf_(c, fmi2Error, CAT_ERROR, "fmi2SetContinuousStates: state %lu = %g is not "
+                  "finite", (unsigned long)k, x[k]);
             return fmi2Error;
         }
     for (k = 0; k < nx; k++) c->model.s[k] = x[k];
@@ -142,7 +142,7 @@ fmi2Status fmi2GetEventIndicators(fmi2Component comp, fmi2Real z[], size_t nz)
     (void)z;
     if (!me_call(c, "fmi2GetEventIndicators", READABLE)) return fmi2Error;
     if (nz == 0) return fmi2OK;
-    logf_(c, fmi2Error, CAT_ERROR, "fmi2GetEventIndicators: %zu asked for, this FMU has none",
-          nz);
+    logf_(c, fmi2Error, CAT_ERROR, "fmi2GetEventIndicators: %lu asked for, this FMU has none",
+          (unsigned long)nz);
     return fmi2Error;
 }
