@@ -268,12 +268,13 @@ double hg_hn_factor(double lambda, double alpha_hn, double beta_hn, double gamma
 
 double hg_shear_limit(double tau_v, double tau_L, double *slope)
 {
-    double x;
+    double x, e;
     if (!(tau_L > 0.0)) {
         *slope = 1.0;
         return tau_v;
     }
     x = tau_v / tau_L;
-    *slope = exp(-x);
-    return -tau_L * expm1(-x);
+    e = expm1(-x);
+    *slope = 1.0 + e; /* exp(-x), from the same call */
+    return -tau_L * e;
 }
