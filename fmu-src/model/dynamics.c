@@ -34,7 +34,7 @@ static double shaft2_torque(const hg_dyn_params *p, const double *y)
 
 int hg_dyn_quasi_static_input(const hg_dyn_params *p)
 {
-    return p->mesh == HG_MESH_MODEL_RIGID && p->friction.model == HG_FRICTION_MODEL_MAP;
+    return p->mesh == HG_MESH_MODEL_RIGID && p->quasi_static_input;
 }
 
 double hg_dyn_input_speed(const hg_dyn_params *p, const double *y)
@@ -248,9 +248,10 @@ static void axle_losses(const hg_dyn_params *p, const double *y, hg_dyn_eval *ev
                      ev->T_oil, &ev->axle);
 }
 
-/* Rigid mesh: the pinion-gear body's acceleration and the mesh load it implies. At the map level
- * the body includes the input shaft's end: the input shaft is quasi-static there
- * (hg_dyn_quasi_static_input), a massless spring carrying T_1 = T_s - I_s acc to the pinion.
+/* Rigid mesh: the pinion-gear body's acceleration and the mesh load it implies. With the input
+ * shaft quasi-static (hg_dyn_quasi_static_input: the map level's, or input_shaft = quasi_static)
+ * the body includes the input shaft's end, the shaft a massless spring carrying
+ * T_1 = T_s - I_s acc to the pinion.
  * Friction needs the load and changes the acceleration: one pass from the frictionless load
  * suffices (the friction torques change W_t by a fraction mu of the inertial part). */
 static void rigid_mesh(const hg_dyn_params *p, const hg_inputs *u, const double *y,

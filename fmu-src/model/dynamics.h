@@ -52,6 +52,7 @@ typedef struct {
     double c_t1, c_m, c_t2;      /* [N m s/rad], [N s/m], [N m s/rad] */
     int mesh;                    /* HG_MESH_MODEL_RIGID, _MEAN (constant k_m0, R_p0, no e_0, no
                                     backlash) or _VARYING */
+    int quasi_static_input;      /* the input shaft quasi-static (input_shaft; rigid mesh only) */
     hg_backlash backlash;        /* b = 0 unless the mesh varies */
     double k_m0, R_p0;           /* mean mesh stiffness [N/m] and radius [m] */
     double ratio;                /* N_g / N_p */
@@ -121,10 +122,11 @@ void hg_dyn_derivatives(const hg_dyn_params *p, const hg_inputs *u, const double
  * k_m f(x): the varying mesh with tooth data of several torque levels. */
 int hg_dyn_loaded_law(const hg_dyn_params *p);
 
-/* Whether the input shaft is quasi-static (docs/model.md, "Fidelity levels"): at the map level
- * (rigid mesh, the loss from the efficiency map, nothing on the mesh's time scale) its mode with
- * the pinion, above a kilohertz, is not resolved; the shaft is a massless spring and its end
- * turns with the pinion (its twist and speed states stay constant). */
+/* Whether the input shaft is quasi-static (docs/model.md, "Fidelity levels"; input_shaft: by
+ * default at the map level, whose loss from the efficiency map has nothing on the mesh's time
+ * scale): its mode with the pinion, above a kilohertz, is not resolved; the shaft is a massless
+ * spring and its end turns with the pinion (its twist and speed states stay constant). The rigid
+ * mesh only. */
 int hg_dyn_quasi_static_input(const hg_dyn_params *p);
 
 /* The speed of the input shaft's end [rad/s]: its state, or the pinion's when the shaft is

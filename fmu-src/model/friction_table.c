@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "io/constants.h"
+#include "model/table_store.h"
 
 #define W_FLOOR 1000.0   /* smallest W_max [N] */
 #define LOAD_LOW 0.0625  /* rebuild when W_t falls below this fraction of W_max */
@@ -24,6 +25,18 @@ void hg_ft_key_for(double w_p, double ratio, double T_bath, double W_t, hg_ft_ke
     key->T_bath = T_bath;
     key->W_max = fmax(2.0 * fabs(W_t), W_FLOOR);
     key->w_dir = 0.0;
+}
+
+void hg_ft_node_keys(const hg_ft_key *key, double ratio, hg_ft_key *lo, hg_ft_key *hi)
+{
+    double x = log(fabs(key->w_p) > HG_FT_SPEED_MIN ? fabs(key->w_p) : HG_FT_SPEED_MIN);
+    double n = floor(x * (1.0 / HG_FT_NODE_STEP));
+    *lo = *hi = *key;
+    lo->w_p = copysign(exp(n * HG_FT_NODE_STEP), key->w_p);
+    hi->w_p = copysign(exp((n + 1.0) * HG_FT_NODE_STEP), key->w_p);
+    lo->w_g = lo->w_p / ratio;
+    hi->w_g = hi->w_p / ratio;
+    lo->w_dir = hi->w_dir = 0.0;
 }
 
 /* The speed window of a key speed [rad/s]: relative, with an absolute floor. */
@@ -158,6 +171,39 @@ void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg
     t->built = 1;
 }
 
+/* Entry by entry (ghosts included: they are linear in the nodes, and so is the interpolant). */
+void hg_friction_table_between(hg_friction_table *t, const hg_friction_table *lo,
+                               const hg_friction_table *hi, const hg_ft_key *key,
+                               int gear_follows)
+{
+    double x_lo = log(fabs(lo->key.w_p)), h = log(fabs(hi->key.w_p)) - x_lo;
+    double u = (log(fabs(key->w_p)) - x_lo) / h, u2 = u * u, u3 = u2 * u;
+    double h00 = 2.0 * u3 - 3.0 * u2 + 1.0, h10 = (u3 - 2.0 * u2 + u) * h;
+    double h01 = 3.0 * u2 - 2.0 * u3, h11 = (u3 - u2) * h;
+    double d00 = 6.0 * (u2 - u) / h, d10 = 3.0 * u2 - 4.0 * u + 1.0, d11 = 3.0 * u2 - 2.0 * u;
+    double g_lo = lo->key.w_g / lo->key.w_p, g_hi = hi->key.w_g / hi->key.w_p;
+    double g = key->w_g / key->w_p, per_w = 1.0 / key->w_p;
+    int i, j;
+    for (i = 0; i < HG_FT_N_PSI + 3; i++)
+        for (j = 0; j < HG_FT_N_L + 2; j++) {
+            const double *a = lo->c[i][j], *b = hi->c[i][j];
+            double *e = t->c[i][j];
+            /* d ln mu / d ln|w_p| along w_g = g w_p */
+            double s_a = lo->key.w_p * (a[HG_FT_CH_WP] + a[HG_FT_CH_WG] * g_lo);
+            double s_b = hi->key.w_p * (b[HG_FT_CH_WP] + b[HG_FT_CH_WG] * g_hi);
+            double dL = d00 * (a[HG_FT_CH_L] - b[HG_FT_CH_L]) + d10 * s_a + d11 * s_b;
+            double wg = gear_follows ? 0.0 : (1.0 - u) * a[HG_FT_CH_WG] + u * b[HG_FT_CH_WG];
+            e[HG_FT_CH_L] = h00 * a[HG_FT_CH_L] + h10 * s_a + h01 * b[HG_FT_CH_L] + h11 * s_b;
+            e[HG_FT_CH_WG] = wg;
+            e[HG_FT_CH_WP] = dL * per_w - wg * g;
+            e[HG_FT_CH_T] = (1.0 - u) * a[HG_FT_CH_T] + u * b[HG_FT_CH_T];
+        }
+    t->key = *key;
+    t->per_W_max = 1.0 / key->W_max;
+    t->usable = lo->usable && hi->usable;
+    t->built = 1;
+}
+
 /* Catmull-Rom weights at t in [0, 1] for the nodes -1, 0, 1, 2. */
 static void weights(double t, double w[4])
 {
@@ -265,38 +311,104 @@ void hg_friction_table_pairs_blend(const hg_friction_table *lo, const hg_frictio
 
 void hg_ft_set_free(hg_ft_set *s)
 {
-    free(s->t);
-    s->t = NULL;
+    int i;
+    for (i = 0; i < HG_N_FLANKS * HG_MAX_LEVELS; i++) {
+        free(s->t[i]);
+        s->t[i] = NULL;
+    }
     s->n_flanks = s->n_levels = 0;
     s->keyed = 0;
 }
 
-int hg_ft_set_alloc(hg_ft_set *s, const hg_gearset *g, int gear_follows)
+/* The store's hash of what the tables depend on: the friction model (its parameters and the
+ * lubricant's values, not where they are), the gear set's series and gear_follows. */
+static hg_store_id content_id(const hg_friction_config *cfg, const hg_gearset *g,
+                              int gear_follows)
 {
+    hg_store_id id = hg_store_id_of("friction table nodes");
+    hg_ehl_params e;
+    memcpy(&e, &cfg->ehl, sizeof e); /* the bytes, padding as the defaults zeroed it */
+    e.z_table = NULL;                /* made from the lubricant hashed below */
+    id = hg_store_hash(id, &cfg->model, sizeof cfg->model);
+    id = hg_store_hash(id, &cfg->mu_const, sizeof cfg->mu_const);
+    id = hg_store_hash(id, &e, sizeof e);
+    if (cfg->lub) id = hg_store_hash(id, cfg->lub, sizeof *cfg->lub);
+    id = hg_store_hash(id, g, sizeof *g);
+    return hg_store_hash(id, &gear_follows, sizeof gear_follows);
+}
+
+void hg_ft_set_alloc(hg_ft_set *s, const hg_friction_config *cfg, const hg_gearset *g,
+                     int gear_follows)
+{
+    hg_store_id id = content_id(cfg, g, gear_follows);
     int i, n = g->n_flanks * g->n_levels;
-    if (s->n_flanks * s->n_levels != n) {
-        hg_ft_set_free(s);
-        if (!(s->t = malloc((size_t)n * sizeof *s->t))) return -1;
-    }
     s->n_flanks = g->n_flanks;
     s->n_levels = g->n_levels;
     s->keyed = 0;
     s->gear_follows = gear_follows;
+    s->ratio = (double)g->N_g / g->N_p;
+    s->content[0] = id.a;
+    s->content[1] = id.b;
     for (i = 0; i < n; i++) {
         int fl = i / g->n_levels, lv = i % g->n_levels, first = 0;
         while (!hg_gearset_same_contact(g, fl, first, lv)) first++;
         s->shared[i] = fl * g->n_levels + first;
-        s->t[i].built = 0;
+        if (s->t[i]) s->t[i]->built = 0;
     }
+}
+
+/* What a node table is built from. */
+typedef struct {
+    const hg_friction_config *cfg;
+    const hg_gearset *g;
+    int flank, level, gear_follows;
+    const hg_ft_key *key;
+} node_job;
+
+static int build_node(void *table, void *ctx)
+{
+    const node_job *j = ctx;
+    hg_friction_table_build(table, j->cfg, j->g, j->flank, j->level, j->key, j->gear_follows);
     return 0;
+}
+
+/* The node table of table index i for key k, from the store (solved now if no instance of the
+ * process has it), held until hg_store_put; NULL when out of memory. */
+static const hg_friction_table *node(hg_ft_set *s, const hg_friction_config *cfg,
+                                     const hg_gearset *g, int i, const hg_ft_key *k)
+{
+    hg_store_id id;
+    node_job job;
+    const hg_friction_table *t;
+    int built;
+    id.a = s->content[0], id.b = s->content[1];
+    id = hg_store_hash(id, &i, sizeof i);
+    id = hg_store_hash(id, k, sizeof *k);
+    job.cfg = cfg, job.g = g, job.flank = i / s->n_levels, job.level = i % s->n_levels;
+    job.gear_follows = s->gear_follows, job.key = k;
+    t = hg_store_get(id, sizeof *t, build_node, &job, NULL, &built);
+    s->solved += (unsigned long)built;
+    if (t && !memcmp(&t->key, k, sizeof *k)) return t;
+    hg_store_put(t); /* a hash collision (never seen) or out of memory: the direct solve */
+    return NULL;
 }
 
 const hg_friction_table *hg_ft_set_table(hg_ft_set *s, const hg_friction_config *cfg,
                                          const hg_gearset *g, int flank, int level)
 {
     int i = s->shared[flank * s->n_levels + level];
-    hg_friction_table *t = &s->t[i];
-    if (!t->built || memcmp(&t->key, &s->key, sizeof s->key))
-        hg_friction_table_build(t, cfg, g, flank, i % s->n_levels, &s->key, s->gear_follows);
+    hg_friction_table *t = s->t[i];
+    if (!t && !(t = s->t[i] = calloc(1, sizeof *t))) return NULL;
+    if (!t->built || memcmp(&t->key, &s->key, sizeof s->key)) {
+        hg_ft_key k_lo, k_hi;
+        const hg_friction_table *lo, *hi;
+        hg_ft_node_keys(&s->key, s->ratio, &k_lo, &k_hi);
+        lo = node(s, cfg, g, i, &k_lo);
+        hi = lo ? node(s, cfg, g, i, &k_hi) : NULL;
+        if (hi) hg_friction_table_between(t, lo, hi, &s->key, s->gear_follows);
+        hg_store_put(lo);
+        hg_store_put(hi);
+        if (!hi) return NULL; /* out of memory: the direct solve */
+    }
     return t->usable ? t : NULL;
 }

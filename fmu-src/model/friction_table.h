@@ -47,6 +47,16 @@ typedef struct {
     double c[HG_FT_N_PSI + 3][HG_FT_N_L + 2][HG_FT_N_CH];
 } hg_friction_table;
 
+/* Node speeds: the tables the friction model is solved for sit at pinion speeds
+ * +-exp(n HG_FT_NODE_STEP) rad/s (n = 0, 1, ...; the gear's w_p / ratio), and the table of an
+ * operating point is the cubic Hermite in ln|w_p| between the two nodes around it, from their
+ * values and speed derivatives (hg_friction_table_between): about 28 % of speed per node, where
+ * the key's window is 4 %, so a ramp or a launch's swing solves a node table every seventh
+ * window or less, and an operating point that comes back finds its nodes built. The
+ * interpolant stays within 4e-5 of ln mu of a table solved at the point (0.25 in ln w; 1e-4 at
+ * 0.5), against the tables' own 1.5e-3 (tests/c/test_friction_table.c). */
+#define HG_FT_NODE_STEP 0.25
+
 /* Relative drift of the pinion speed, drift of the bath temperature [K] and load fraction of
  * W_max beyond which hg_ft_key_covers asks for a rebuild. The gear speed's own excursions from
  * w_p N_p / N_g (the dynamic transmission error's rate, about 1 %) are left to the derivative.
@@ -93,6 +103,18 @@ void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg
                              const hg_gearset *g, int flank, int level, const hg_ft_key *key,
                              int gear_follows);
 
+/* The table for key between the node tables lo and hi (hg_ft_node_keys of key; the same flank,
+ * level and gear_follows): cubic Hermite in ln|w_p| of ln mu along the line w_g / w_p of the
+ * keys from the nodes' values and speed derivatives, its derivative there the table's speed
+ * derivative along that line; the w_g and temperature derivatives interpolated linearly. */
+void hg_friction_table_between(hg_friction_table *t, const hg_friction_table *lo,
+                               const hg_friction_table *hi, const hg_ft_key *key,
+                               int gear_follows);
+
+/* The keys of the node tables around key's pinion speed (|w_p| >= HG_FT_SPEED_MIN): node speeds
+ * with w_p's sign, w_g = w_p / ratio, key's temperature and load range. */
+void hg_ft_node_keys(const hg_ft_key *key, double ratio, hg_ft_key *lo, hg_ft_key *hi);
+
 /* F_f [N] of a pair at phase psi carrying W at speeds w_p, w_g and bath temperature T_bath; the
  * drifts from the key enter up to twice the rebuild window (speeds relative to at least
  * HG_FT_SPEED_MIN, temperature HG_FT_T_DRIFT) and are held beyond, so that mu stays bounded when the operating
@@ -114,27 +136,35 @@ void hg_friction_table_pairs_blend(const hg_friction_table *lo, const hg_frictio
                                    double w_p, double w_g, double T_bath, double F[HG_MAX_PAIRS]);
 
 /* The tables of every flank and torque level of a gear set, t[flank * n_levels + level], for one
- * key: a table is built when first asked for under the key (hg_ft_set_table), so a run builds
+ * key: a table is made when first asked for under the key (hg_ft_set_table) between the node
+ * tables around the key's speed, which come from the process's table store (model/table_store.h:
+ * solved by the first instance that needs them, kept while the store has room), so a run builds
  * only the levels its torque reaches, and levels whose contact series are the same
  * (hg_gearset_same_contact: the friction at a pair load depends on the contact alone) share one.
- * What a table holds depends on the key, flank and level alone, so when it was built changes
- * nothing but the cost. */
+ * What a table holds depends on the key, flank and level alone, so when and from which stored
+ * nodes it was made changes nothing but the cost. */
 typedef struct {
     hg_ft_key key;
     int keyed; /* key is set */
     int gear_follows; /* the tables are built for a rigid mesh (hg_friction_table_build) */
     int n_flanks, n_levels;
+    double ratio;     /* N_g / N_p of the gear set (the node keys' w_g) */
     int shared[HG_N_FLANKS * HG_MAX_LEVELS]; /* the table each flank and level uses */
-    hg_friction_table *t;
+    hg_friction_table *t[HG_N_FLANKS * HG_MAX_LEVELS]; /* allocated when first used */
+    unsigned long long content[2]; /* the store's hash of the friction model, gear set and
+                                      gear_follows (hg_ft_set_alloc) */
+    unsigned long solved;          /* node tables this set solved (diagnostics) */
 } hg_ft_set;
 
-/* Allocates the (unbuilt) tables for g into s, which must be zeroed or allocated before, to be
- * built with gear_follows; -1 when out of memory (s then holds none). */
-int hg_ft_set_alloc(hg_ft_set *s, const hg_gearset *g, int gear_follows);
+/* Prepares s, which must be zeroed or prepared before, for the tables of friction model cfg on
+ * gear set g, to be built with gear_follows (none built yet). */
+void hg_ft_set_alloc(hg_ft_set *s, const hg_friction_config *cfg, const hg_gearset *g,
+                     int gear_follows);
 void hg_ft_set_free(hg_ft_set *s);
 
 /* The table of `flank` and `level` (as hg_gearset_level_at gives them) for s->key, built now
- * with cfg on g if it is not; NULL when it is not usable (the direct solve runs). */
+ * with cfg on g (those of hg_ft_set_alloc) if it is not; NULL when it is not usable or out of
+ * memory (the direct solve runs). */
 const hg_friction_table *hg_ft_set_table(hg_ft_set *s, const hg_friction_config *cfg,
                                          const hg_gearset *g, int flank, int level);
 

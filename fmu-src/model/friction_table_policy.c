@@ -32,12 +32,11 @@ int hg_ftp_setup(hg_ft_set **tables, hg_setup *s, const hg_vars *v, char *err, s
         hg_ftp_free(tables);
         return 0;
     }
-    if ((!*tables && !(*tables = calloc(1, sizeof **tables))) ||
-        hg_ft_set_alloc(*tables, &s->gear, s->p.mesh == HG_MESH_MODEL_RIGID)) {
-        hg_ftp_free(tables);
+    if (!*tables && !(*tables = calloc(1, sizeof **tables))) {
         hg_errorf(err, errlen, "out of memory for the friction tables");
         return -1;
     }
+    hg_ft_set_alloc(*tables, &s->p.friction, &s->gear, s->p.mesh == HG_MESH_MODEL_RIGID);
     return 0;
 }
 
@@ -75,8 +74,9 @@ static void build(hg_ft_set *tables, const hg_runtime *rt, const hg_setup *s,
     hg_ft_set_table(tables, &s->p.friction, &s->gear, b.flank, b.lo);
     if (b.hi != b.lo) hg_ft_set_table(tables, &s->p.friction, &s->gear, b.flank, b.hi);
     hg_logf(log, "logEvents", "t = %.6f s: friction table built for %.1f rpm, T_oil = "
-            "%.2f degC, pair loads up to %.0f N", rt->t, rt->ft_key.w_p * HG_RPM_PER_RAD_S,
-            rt->ft_key.T_bath - 273.15, rt->ft_key.W_max);
+            "%.2f degC, pair loads up to %.0f N (%lu node tables solved so far)", rt->t,
+            rt->ft_key.w_p * HG_RPM_PER_RAD_S, rt->ft_key.T_bath - 273.15, rt->ft_key.W_max,
+            tables->solved);
 }
 
 int hg_ftp_begin(hg_ft_set *tables, hg_runtime *rt, hg_setup *s, int rebuild,

@@ -10,6 +10,7 @@
 #include "model/model_object.h"
 #include "model/outputs.h"
 #include "model/stepping.h"
+#include "model/table_store.h"
 
 #define MAX_EVENTS_PER_STEP 100000
 #define MAX_SOLVER_STEPS 500000 /* per call of the integrator */
@@ -23,6 +24,7 @@ hg_model *hg_model_new(const char *resource_dir, hg_log_fn log, void *log_ctx)
         free(m);
         return NULL;
     }
+    hg_store_attach(); /* the process's shared tables live while an instance does */
     strcpy(m->resource_dir, resource_dir ? resource_dir : "");
     m->log.fn = log;
     m->log.ctx = log_ctx;
@@ -37,6 +39,7 @@ void hg_model_free(hg_model *m)
     hg_ftp_free(&m->tables);
     free(m->resource_dir);
     free(m);
+    hg_store_detach();
 }
 
 double hg_model_time(const hg_model *m) { return m->rt.t; }

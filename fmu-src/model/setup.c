@@ -1,6 +1,8 @@
 /* Model set-up: see setup.h. */
 #include "model/setup.h"
 
+#include "model/table_store.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -94,16 +96,63 @@ static int load_failed(const data_file *f, const char *why, char *err, size_t er
     return -1;
 }
 
+static int build_phase_tables(void *table, void *gear)
+{
+    return hg_phase_tables_build(table, gear);
+}
+
+static void free_phase_tables(void *table)
+{
+    hg_phase_tables_free(table);
+}
+
+/* A gear-set file read and checked, for the store (the path and the error buffer). */
+typedef struct {
+    const char *path;
+    char *why;
+    size_t why_len;
+} gearset_job;
+
+static int read_gearset(void *gear, void *ctx)
+{
+    gearset_job *j = ctx;
+    return hg_gearset_load(j->path, gear, j->why, j->why_len);
+}
+
+/* The gear set of the file at path into *g: read and checked once per file content in the
+ * process (the store's entry, named by the file's content hash), copied here. */
+static int gearset_of_file(const char *path, hg_gearset *g, char *why, size_t why_len)
+{
+    char hash[HG_HASH_HEX];
+    gearset_job job;
+    const hg_gearset *read;
+    if (hg_datafile_hash(path, hash, why, why_len)) return -1;
+    job.path = path, job.why = why, job.why_len = why_len;
+    read = hg_store_get(hg_store_hash(hg_store_id_of("gear-set file"), hash, sizeof hash),
+                        sizeof *read, read_gearset, &job, NULL, NULL);
+    if (!read) return *why ? -1 : hg_gearset_load(path, g, why, why_len); /* out of memory */
+    memcpy(g, read, sizeof *g);
+    hg_store_put(read);
+    return 0;
+}
+
 static int load_gearset(hg_setup *s, const char *resource_dir, const hg_vars *v, char *err,
                         size_t errlen)
 {
     data_file f = gearset_file(v);
-    char why[HG_ERRLEN];
+    char why[HG_ERRLEN] = "";
+    const hg_phase_tables *held;
     if (resolve(&f, resource_dir, err, errlen)) return -1;
-    if (hg_gearset_load(f.path, &s->gear, why, sizeof why))
+    if (gearset_of_file(f.path, &s->gear, why, sizeof why))
         return load_failed(&f, why, err, errlen);
     hg_gearset_scale(&s->gear, v->k_m_scale, v->e_0_scale);
-    if (hg_phase_tables_build(&s->phase, &s->gear)) {
+    held = s->phase;
+    s->phase = hg_store_get(hg_store_hash(hg_store_id_of("phase tables"), &s->gear,
+                                          sizeof s->gear),
+                            sizeof *s->phase, build_phase_tables, &s->gear, free_phase_tables,
+                            NULL);
+    hg_store_put(held); /* after: the same gear set finds the tables it held */
+    if (!s->phase) {
         hg_errorf(err, errlen, "out of memory for the tables of %s", s->gear.name);
         return -1;
     }
@@ -184,9 +233,16 @@ static int load_map(hg_setup *s, const char *resource_dir, const hg_vars *v, cha
     return 0;
 }
 
+static int build_z_table(void *table, void *lub)
+{
+    hg_z_table_build(table, lub);
+    return 0;
+}
+
 static void ehl_params(hg_setup *s, const hg_vars *v)
 {
     hg_ehl_params *e = &s->p.friction.ehl;
+    const hg_z_table *held;
     hg_ehl_params_default(e);
     e->E = v->E;
     e->nu = v->nu;
@@ -214,12 +270,15 @@ static void ehl_params(hg_setup *s, const hg_vars *v)
         e->Lambda_cap = 0.0;
     }
     e->thermal = v->friction_model == HG_FRICTION_MODEL_EHL_THERMAL;
-    e->z_table = NULL;
+    held = s->z_table;
+    s->z_table = NULL;
     if (e->roelands_Z == HG_Z_EXACT && (e->thermal || v->friction_model ==
-                                         HG_FRICTION_MODEL_EHL_ISOTHERMAL)) {
-        hg_z_table_build(&s->z_table, &s->lub);
-        e->z_table = &s->z_table;
-    }
+                                         HG_FRICTION_MODEL_EHL_ISOTHERMAL))
+        s->z_table = hg_store_get(hg_store_hash(hg_store_id_of("Z_exact over T"), &s->lub,
+                                                sizeof s->lub),
+                                  sizeof *s->z_table, build_z_table, &s->lub, NULL, NULL);
+    hg_store_put(held); /* after: the same lubricant finds the table it held */
+    e->z_table = s->z_table; /* NULL (out of memory): Z_exact solved at each temperature */
     s->p.friction.lub = &s->lub;
 }
 
@@ -273,6 +332,10 @@ static void dynamics_params(hg_setup *s, const hg_vars *v)
     p->k_t1 = v->k_t1;
     p->k_t2 = v->k_t2;
     p->mesh = v->mesh_model;
+    p->quasi_static_input = v->input_shaft == HG_INPUT_SHAFT_QUASI_STATIC ||
+                            (v->input_shaft == HG_INPUT_SHAFT_AUTO &&
+                             v->mesh_model == HG_MESH_MODEL_RIGID &&
+                             v->friction_model == HG_FRICTION_MODEL_MAP);
     p->backlash.b = p->mesh == HG_MESH_MODEL_VARYING ? v->b : 0.0;
     p->backlash.eps = p->mesh == HG_MESH_MODEL_VARYING && v->backlash_model == HG_BACKLASH_MODEL_SMOOTHED
                           ? v->backlash_smoothing
@@ -284,7 +347,7 @@ static void dynamics_params(hg_setup *s, const hg_vars *v)
                                            fabs(v->T_s));
     p->ratio = (double)s->gear.N_g / s->gear.N_p;
     p->gear = &s->gear;
-    p->phase = &s->phase;
+    p->phase = s->phase;
     s->heat.valid = 0; /* emptied: the ledger is set up anew below */
     p->heat = &s->heat;
     p->friction.model = v->friction_model;
@@ -362,6 +425,12 @@ int hg_setup_load(hg_setup *s, const char *resource_dir, const hg_logger *lg, hg
             : hg_setup_oil_in_range(s, "T_bath", v->T_bath, err, errlen))
         return -1;
     dynamics_params(s, v);
+    if (v->input_shaft == HG_INPUT_SHAFT_QUASI_STATIC && v->mesh_model != HG_MESH_MODEL_RIGID) {
+        hg_errorf(err, errlen, "input_shaft = quasi_static joins the input shaft's end to the "
+                  "pinion-gear body of the rigid mesh: it needs mesh_model = rigid (mesh_model "
+                  "is %d)", v->mesh_model);
+        return -1;
+    }
     ehl_params(s, v);
     if (load_map(s, resource_dir, v, err, errlen)) return -1;
     if (damping(s, lg, v, err, errlen)) return -1;
@@ -382,5 +451,8 @@ int hg_setup_load(hg_setup *s, const char *resource_dir, const hg_logger *lg, hg
 void hg_setup_free(hg_setup *s)
 {
     hg_effmap_free(&s->map);
-    hg_phase_tables_free(&s->phase);
+    hg_store_put(s->phase);
+    hg_store_put(s->z_table);
+    s->phase = NULL;
+    s->z_table = NULL;
 }

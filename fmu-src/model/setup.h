@@ -12,9 +12,11 @@
 
 typedef struct {
     hg_gearset gear;
-    hg_phase_tables phase; /* gear's series tabulated, per flank and torque level */
+    const hg_phase_tables *phase; /* gear's series tabulated, per flank and torque level (held
+                                     from the process's table store, model/table_store.h) */
     hg_lubricant lub;
-    hg_z_table z_table;   /* the lubricant's Z_exact over T (roelands_z = exact, EHL friction) */
+    const hg_z_table *z_table;    /* the lubricant's Z_exact over T (roelands_z = exact, EHL
+                                     friction; held from the store), or NULL */
     hg_effmap map;        /* friction_model = map only */
     hg_heat_memo heat;    /* the housing heat's cache */
     hg_dyn_params p;      /* points into gear, lub, map and heat */

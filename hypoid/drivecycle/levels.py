@@ -13,10 +13,12 @@ ZERO_C = 273.15
 # The fidelity levels of the gear FMU for vehicle energy, levels of hypoid.fmu.levels at the
 # tolerance each runs at here: map, the pick for oil and air within the built-in maps' range
 # (MAP_T_MIN), the rigid mesh with the mesh friction from the full model's efficiency map
-# (resources/maps; the default); fast (the rigid level), the pick below it, the rigid mesh with
-# the friction model itself; full: the paper's model.
+# (resources/maps; the default); fast (the rigid level with the input shaft quasi-static, as the
+# map level's), the pick below it, the rigid mesh with the friction model itself; full: the
+# paper's model. A resolved input shaft rings at every kink of the driver's torque for much of a
+# 50 ms step (docs/decisions.md, "The fast level's input shaft quasi-static").
 LEVELS = {
-    "fast": {**fmu_levels.LEVELS["rigid"], "rtol": 1e-4},
+    "fast": {**fmu_levels.LEVELS["rigid"], "rtol": 1e-4, "input_shaft": "quasi_static"},
     "map": {**fmu_levels.LEVELS["map"], "rtol": 1e-5},
     "full": {**fmu_levels.LEVELS["full"], "rtol": 1e-6},
 }
@@ -62,6 +64,8 @@ def reaching_levels(name, value, extra):
         return {"map"} if value == "map" else {"fast", "full"}
     if name == "mesh_model":
         return {"map", "fast"} if value == "rigid" else {"full"}
+    if name == "input_shaft":  # quasi-static on the rigid mesh only
+        return {"map", "fast"} if value == "quasi_static" else set(LEVELS)
     if value == TABLE.start(name):  # the default: the levels are made with it
         return set(LEVELS)
     if name in MESH_DYNAMICS:

@@ -155,6 +155,7 @@ static void test_map_level_quasi_static_input(void)
     map.eta = eta;
     map.M_w = map.M_T = map.M_K = M; /* two nodes: no curvature */
     p.friction.model = HG_FRICTION_MODEL_MAP;
+    p.quasi_static_input = 1; /* input_shaft = auto at the map level */
     p.map = &map;
     y[HG_Y_TWIST1] = 1e-3;  /* not a state here: no torque of its own */
     y[HG_Y_TWIST2] = -2e-4; /* T_2 = -160 N m */

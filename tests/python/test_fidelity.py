@@ -156,12 +156,42 @@ def test_map_level_reproduces_the_full_model(fmu_path, rpm, torque, bath_c):
     assert mapped < 0.999  # the map carries real losses
 
 
-def test_map_level_needs_the_rigid_mesh(harness):
+def test_quasi_static_input_shaft_turns_with_the_pinion_and_balances_energy(fmu_path):
+    """input_shaft = quasi_static (the drive cycle's fast level; the map level's by default): the
+    input end turns with the pinion (w_s = w_p to the bit), the audit closes; after a torque step the speeds follow the resolved shaft's without its ringing (the
+    rigid body I_s + I_p + I_g/i^2 accelerates as the dynamic shaft's mean)."""
+    def step(t):
+        return 100.0 if t < 0.02 else 160.0
+    out = {}
+    for shaft in ("quasi_static", "dynamic"):
+        from hypoid.fmu.instance import Instance
+        with Instance(fmu_path, name=shaft) as x:
+            x.start(dict(mesh_model="rigid", friction_model="ehl_thermal", input_shaft=shaft,
+                         rtol=1e-8))
+            rows = []
+            for k in range(60):
+                x.set("T_s", step(k * 1e-3))
+                x.step(1e-3)
+                rows.append(x.reals(["w_s", "w_p"] + ENERGY))
+            out[shaft] = np.array(rows)
+    q, d = out["quasi_static"], out["dynamic"]
+    assert np.array_equal(q[:, 0], q[:, 1])
+    assert not np.array_equal(d[:, 0], d[:, 1])
+    e_in, e_out, e_f, e_d, e_x, e_s = q[-1, 2:] - q[0, 2:]  # from the first step's end
+    assert abs(e_in - e_out - e_f - e_d + e_x - e_s) < 1e-6 * e_in
+    assert q[-1, 1] == pytest.approx(d[-1, 1], rel=1e-4)  # the pinion's speed after 40 ms
+
+
+@pytest.mark.parametrize("setting,words", [
+    (dict(friction_model=5), "mesh_model = rigid"),
+    (dict(input_shaft=2), "input_shaft = quasi_static"),
+])
+def test_map_level_and_quasi_static_input_shaft_need_the_rigid_mesh(harness, setting, words):
     h = harness()
     h.slave.setupExperiment(startTime=0.0)
-    h.set_unchecked(dict(friction_model=5))
+    h.set_unchecked(setting)
     h.slave.enterInitializationMode()
     from fmpy.fmi1 import FMICallException
     with pytest.raises(FMICallException):
         h.slave.exitInitializationMode()
-    assert any("mesh_model = rigid" in m[2] for m in h.messages)
+    assert any(words in m[2] and "mesh_model = rigid" in m[2] for m in h.messages)

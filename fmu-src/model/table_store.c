@@ -1,0 +1,205 @@
+/* The process's store of read-only tables: see table_store.h. */
+#include "model/table_store.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#ifdef _WIN32
+#include <windows.h>
+static SRWLOCK store_lock = SRWLOCK_INIT;
+static CONDITION_VARIABLE store_built = CONDITION_VARIABLE_INIT;
+static void lock(void) { AcquireSRWLockExclusive(&store_lock); }
+static void unlock(void) { ReleaseSRWLockExclusive(&store_lock); }
+static void wait_built(void) { SleepConditionVariableSRW(&store_built, &store_lock, INFINITE, 0); }
+static void wake_all(void) { WakeAllConditionVariable(&store_built); }
+#else
+#include <pthread.h>
+static pthread_mutex_t store_lock = PTHREAD_MUTEX_INITIALIZER;
+static pthread_cond_t store_built = PTHREAD_COND_INITIALIZER;
+static void lock(void) { pthread_mutex_lock(&store_lock); }
+static void unlock(void) { pthread_mutex_unlock(&store_lock); }
+static void wait_built(void) { pthread_cond_wait(&store_built, &store_lock); }
+static void wake_all(void) { pthread_cond_broadcast(&store_built); }
+#endif
+
+typedef struct entry {
+    struct entry *next;
+    hg_store_id id;
+    size_t size;
+    int refs;                  /* holders */
+    int building;              /* its build runs (on the thread that asked first) */
+    unsigned long used;        /* the store's clock when last released */
+    hg_store_free_fn free_fn;
+    double content[1];         /* size bytes (double: aligned for any table) */
+} entry;
+
+/* Everything below is the store's state, guarded by store_lock. */
+static struct {
+    entry *head;
+    int instances;         /* attached instances */
+    size_t bytes, idle;    /* content bytes in the store, of them held by nobody */
+    unsigned long clock;   /* releases so far (least recently used) */
+    unsigned long built;   /* entries built so far */
+} store;
+
+static entry *entry_of(const void *table)
+{
+    return (entry *)(void *)((char *)table - offsetof(entry, content));
+}
+
+#define FNV_PRIME 0x100000001b3ULL
+
+hg_store_id hg_store_hash(hg_store_id id, const void *data, size_t n)
+{
+    const unsigned char *p = data;
+    size_t k;
+    for (k = 0; k < n; k++) {
+        id.a = (id.a ^ p[k]) * FNV_PRIME;                             /* FNV-1a */
+        id.b = ((id.b << 5 | id.b >> 59) ^ p[k]) * 0x9e3779b97f4a7c15ULL; /* a second, unrelated */
+    }
+    return id;
+}
+
+hg_store_id hg_store_id_of(const char *kind)
+{
+    hg_store_id id = {0xcbf29ce484222325ULL, 0x84222325cbf29ce4ULL};
+    return hg_store_hash(id, kind, strlen(kind) + 1);
+}
+
+static entry *find(hg_store_id id)
+{
+    entry *e;
+    for (e = store.head; e; e = e->next)
+        if (e->id.a == id.a && e->id.b == id.b) return e;
+    return NULL;
+}
+
+static void unlink_entry(entry *gone)
+{
+    entry **p;
+    for (p = &store.head; *p; p = &(*p)->next)
+        if (*p == gone) {
+            *p = gone->next;
+            return;
+        }
+}
+
+static void destroy(entry *e)
+{
+    if (e->free_fn) e->free_fn(e->content);
+    free(e);
+}
+
+/* Frees the least recently released idle entries while the idle ones exceed the limit. */
+static void trim(void)
+{
+    while (store.idle > HG_STORE_IDLE_BYTES) {
+        entry *e, *old = NULL;
+        for (e = store.head; e; e = e->next)
+            if (!e->refs && !e->building && (!old || e->used < old->used)) old = e;
+        if (!old) return;
+        unlink_entry(old);
+        store.idle -= old->size;
+        store.bytes -= old->size;
+        destroy(old);
+    }
+}
+
+void hg_store_attach(void)
+{
+    lock();
+    store.instances++;
+    unlock();
+}
+
+void hg_store_detach(void)
+{
+    entry *all = NULL;
+    lock();
+    if (--store.instances == 0) { /* nobody left: the store empties (no entry is held) */
+        all = store.head;
+        store.head = NULL;
+        store.bytes = store.idle = 0;
+    }
+    unlock();
+    while (all) {
+        entry *next = all->next;
+        destroy(all);
+        all = next;
+    }
+}
+
+static void take(entry *e)
+{
+    if (e->refs++ == 0) store.idle -= e->size;
+}
+
+const void *hg_store_get(hg_store_id id, size_t size, hg_store_build_fn build, void *ctx,
+                         hg_store_free_fn free_fn, int *built)
+{
+    entry *e;
+    if (built) *built = 0;
+    lock();
+    while ((e = find(id)) != NULL && e->building) wait_built();
+    if (e) {
+        take(e);
+        unlock();
+        return e->content;
+    }
+    e = calloc(1, offsetof(entry, content) + (size > sizeof e->content ? size : sizeof e->content));
+    if (!e) {
+        unlock();
+        return NULL;
+    }
+    e->id = id;
+    e->size = size;
+    e->refs = 1;
+    e->building = 1;
+    e->free_fn = free_fn;
+    e->next = store.head;
+    store.head = e;
+    store.bytes += size;
+    unlock();
+    if (build(e->content, ctx)) { /* failed: not kept; waiting threads try themselves */
+        lock();
+        unlink_entry(e);
+        store.bytes -= size;
+        wake_all();
+        unlock();
+        free(e);
+        return NULL;
+    }
+    if (built) *built = 1;
+    lock();
+    e->building = 0;
+    store.built++;
+    wake_all();
+    unlock();
+    return e->content;
+}
+
+void hg_store_put(const void *table)
+{
+    entry *e;
+    if (!table) return;
+    e = entry_of(table);
+    lock();
+    if (--e->refs == 0) {
+        e->used = ++store.clock;
+        store.idle += e->size;
+        trim();
+    }
+    unlock();
+}
+
+void hg_store_stats(size_t *entries, size_t *bytes, unsigned long *built)
+{
+    entry *e;
+    size_t n = 0;
+    lock();
+    for (e = store.head; e; e = e->next) n++;
+    if (entries) *entries = n;
+    if (bytes) *bytes = store.bytes;
+    if (built) *built = store.built;
+    unlock();
+}
