@@ -29,7 +29,7 @@ for part in "${parts[@]}"; do
     regress)
       run .venv/bin/hypoid regress >"$out/regress-before.txt" || true # exit 1: values moved
       run .venv/bin/hypoid regress --update >"$out/regress-update.txt"
-      run "$py" tools/fmi_ls_ref.py
+      run .venv/bin/python tools/fmi_ls_ref.py
       run cmake --build build -j2 >/dev/null ;; # the FMI 3.0 FMU packs them
     levels)
       run .venv/bin/hypoid records --measure level-table ;;

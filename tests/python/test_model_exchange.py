@@ -149,7 +149,8 @@ def test_gear_and_vehicle_as_one_ode_against_co_simulation(fmu_path):
     me = cd.Result("me", dt, g["time"], None, {n: g[n] for n in cd.GEAR_OUT},
                    {n: v[n] for n in cd.VEHICLE_OUT}, 0.0)
     balance = cd.energy_balance(me)
-    assert balance["coupling"] == 0.0
+    # the same work, integrated as two states of one ODE: equal to the last bits of their sums
+    assert abs(balance["coupling"]) < 1e-14 * balance["interface_throughput"]
     assert abs(balance["relative_residual"]) < 1e-6
     assert min(g["T_w_out"]) < -50.0 < 150.0 < max(g["T_w_out"])  # coast and drive both ran
 
