@@ -3,8 +3,8 @@
  * together by CVODE BDF through the project's solver layer (fmu-src/solver: dense Newton, rtol
  * and rtol x the FMUs' nominals), root finding on the gear's event indicators, an event
  * iteration at every root and wherever a completed step asks for one; the connections at every
- * right-hand side: the gear's w_w to the vehicle's w_w, the vehicle's T_hs to the gear's T_w, the
- * propeller-shaft torque T_s a function of time.
+ * right-hand side: the gear's w_w (a state of it: read from the state vector) to the vehicle's
+ * w_w, the vehicle's T_hs to the gear's T_w, the propeller-shaft torque T_s a function of time.
  *
  *   bench_me GEAR_DIR VEHICLE_DIR [--level full|map|NAME=VALUE,...] [--runs N] [--stop T]
  *            [--rtol R]
@@ -35,6 +35,7 @@ typedef struct {
     instance gear, vehicle;
     size_t nx_g, nx_v, nz;
     fmi2ValueReference g_ts_tw[2], g_ww, v_ww, v_ths;
+    long k_ww; /* w_w's place in the gear's state vector (the host reads it there), or -1 */
     long rhs_calls, jac_calls; /* jac_calls: in runs of nx or more at one time (a Jacobian) */
     long run;                  /* calls in a row at the time of the last one */
     double t_last;
@@ -59,7 +60,8 @@ static int load(me_system *s, double t, const double *x)
     if (g->set_time(s->gear.c, t) != fmi2OK || v->set_time(s->vehicle.c, t) != fmi2OK ||
         g->set_continuous_states(s->gear.c, x, s->nx_g) != fmi2OK ||
         v->set_continuous_states(s->vehicle.c, x + s->nx_g, s->nx_v) != fmi2OK ||
-        g->get_real(s->gear.c, &s->g_ww, 1, &w_w) != fmi2OK ||
+        (s->k_ww >= 0 ? (w_w = x[s->k_ww], 0)
+                      : g->get_real(s->gear.c, &s->g_ww, 1, &w_w) != fmi2OK) ||
         v->set_real(s->vehicle.c, &s->v_ww, 1, &w_w) != fmi2OK ||
         v->get_real(s->vehicle.c, &s->v_ths, 1, &T_hs) != fmi2OK)
         return -1;
@@ -219,6 +221,11 @@ static int run(const fmu_lib *f_g, const fmu_info *m_g, const fmu_lib *f_v, cons
     s.g_ww = (fmi2ValueReference)host_value_reference(m_g, "w_w");
     s.v_ww = (fmi2ValueReference)host_value_reference(m_v, "w_w");
     s.v_ths = (fmi2ValueReference)host_value_reference(m_v, "T_hs");
+    /* w_w is a continuous state: its derivative's place among the derivatives (their value
+     * references follow the state vector's order from der of the first state) */
+    s.k_ww = host_value_reference(m_g, "der(w_w)") - host_value_reference(m_g, "der(twist_1)");
+    if (s.k_ww < 0 || s.k_ww >= (long)s.nx_g || host_value_reference(m_g, "der(w_w)") < 0)
+        s.k_ww = -1;
     if (host_open_as(&s.gear, f_g, m_g, "gear", 1) ||
         host_open_as(&s.vehicle, f_v, m_v, "vehicle", 1) || start(&s, level_params))
         goto done;
