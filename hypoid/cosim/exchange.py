@@ -23,17 +23,18 @@ class GearVehicleExchange:
         self.vehicle = ExchangeInstance(vehicle_fmu, name="vehicle")
         self.g_in = self.gear.refs(["T_s", "T_w"])
         self.g_ww = self.gear.refs(["w_w"])
+        self.k_ww = self.gear.state_index("w_w")  # a state of the gear: read where it is
         self.v_in = self.vehicle.refs(["w_w"])
         self.v_ths = self.vehicle.refs(["T_hs"])
         self.gear.start({**gear_start, "T_s": torque(0.0)})
         self.vehicle.start({**vehicle_start, "w_w": self.gear.get_reals(self.g_ww)[0]})
         self.exchange = Exchange([self.gear, self.vehicle], rtol=rtol, couple=self._couple)
-        self._couple(0.0)
+        self._couple(0.0, [self.gear.states()])
 
-    def _couple(self, t):
+    def _couple(self, t, states):
         """The connections at time t, with the states the integrator set: w_w (a state of the
         gear) to the vehicle, whose T_hs (its states and that input) goes to the gear."""
-        self.vehicle.set_reals(self.v_in, self.gear.get_reals(self.g_ww))
+        self.vehicle.set_reals(self.v_in, [float(states[0][self.k_ww])])
         T_hs = self.vehicle.get_reals(self.v_ths)[0]
         self.gear.set_reals(self.g_in, [self.torque(t), T_hs])
 

@@ -59,6 +59,10 @@ class ExchangeInstance(Instance):
         self._call(self.slave.setTime, t)
         self.t = t
 
+    def state_index(self, name):
+        """The place of the continuous state `name` in the state vector."""
+        return [d.variable.derivative.name for d in self.md.derivatives].index(name)
+
     def states(self):
         x = np.zeros(self.nx)
         self._call(self.slave.getContinuousStates, _pointer(x), self.nx)
@@ -106,8 +110,9 @@ class ExchangeInstance(Instance):
 
 class Exchange:
     """Instances in Model Exchange integrated as one ODE by CVODE (fmpy's SUNDIALS: BDF, dense
-    Newton), the states of each instance one after the other. `couple(t)`, when given, sets the
-    inputs from the outputs and the time before every evaluation (a master's connections)."""
+    Newton), the states of each instance one after the other. `couple(t, states)`, when given,
+    sets the inputs from the outputs (or from the states: a list of each instance's state
+    vector) before every evaluation (a master's connections)."""
 
     def __init__(self, instances, rtol=1e-6, max_step=None, couple=None):
         self.instances, self.rtol, self.couple = list(instances), rtol, couple
@@ -117,11 +122,12 @@ class Exchange:
         self.events = 0
 
     def _load(self, t, x):
-        for inst, a, b in zip(self.instances, self.cuts[:-1], self.cuts[1:]):
+        parts = [x[a:b] for a, b in zip(self.cuts[:-1], self.cuts[1:])]
+        for inst, part in zip(self.instances, parts):
             inst.set_time(t)
-            inst.set_states(x[a:b])
+            inst.set_states(part)
         if self.couple:
-            self.couple(t)
+            self.couple(t, parts)
 
     def _solver(self, t):
         from fmpy.sundials import CVodeSolver
