@@ -56,21 +56,49 @@ void hg_trb_pair_axial(double Fr_1, double Y_1, double Fr_2, double Y_2, double 
 #define MU_BL 0.15    /* sliding friction in boundary lubrication */
 #define MU_EHL 0.002  /* sliding friction in full film, tapered roller bearings */
 
-hg_trb_moment hg_trb_friction(const hg_trb *b, double F_r, double F_a, double nu, double omega)
+void hg_trb_geometry_of(const hg_trb *b, hg_trb_geometry *g)
 {
-    hg_trb_moment m;
+    double d = b->d * 1e3, D = b->D * 1e3; /* mm */
+    g->dm = 0.5 * (d + D);
+    g->G_rr0 = b->R_1 * pow(g->dm, 2.38);
+    g->G_sl0 = b->S_1 * pow(g->dm, 0.82);
+    g->dm128 = pow(g->dm, 1.28);
+    g->rs = (d + D) * sqrt(SKF_K_Z / (2.0 * (D - d)));
+}
+
+void hg_trb_speed_of(double nu, double omega, hg_trb_speed *s)
+{
     double n = fabs(omega) * 30.0 / HG_PI; /* r/min */
     double v = nu * 1e6;                   /* mm^2/s */
-    double d = b->d * 1e3, D = b->D * 1e3, dm = 0.5 * (d + D);
-    double G_rr = b->R_1 * pow(dm, 2.38) * pow(F_r + SKF_R2 * b->Y * F_a, 0.31);
-    double G_sl = b->S_1 * pow(dm, 0.82) * (F_r + SKF_S2 * b->Y * F_a);
-    double phi_ish = 1.0 / (1.0 + 1.84e-9 * pow(n * dm, 1.28) * pow(v, 0.64));
-    double phi_rs = exp(-SKF_K_RS * v * n * (d + D) * sqrt(SKF_K_Z / (2.0 * (D - d))));
-    double phi_bl = exp(-2.6e-8 * pow(n * v, 1.4) * dm);
+    double ln_n = log(n), ln_v = log(v);   /* n = 0: -inf, and every power of n below 0 */
+    s->vn = v * n;
+    s->n128v064 = exp(1.28 * ln_n + 0.64 * ln_v);
+    s->vn14 = exp(1.4 * (ln_n + ln_v));
+    s->vn06 = exp(0.6 * (ln_n + ln_v));
+}
+
+hg_trb_moment hg_trb_friction_at(const hg_trb *b, const hg_trb_geometry *g,
+                                 const hg_trb_speed *s, double F_r, double F_a)
+{
+    hg_trb_moment m;
+    double G_rr = g->G_rr0 * pow(F_r + SKF_R2 * b->Y * F_a, 0.31);
+    double G_sl = g->G_sl0 * (F_r + SKF_S2 * b->Y * F_a);
+    double phi_ish = 1.0 / (1.0 + 1.84e-9 * g->dm128 * s->n128v064);
+    double phi_rs = exp(-SKF_K_RS * s->vn * g->rs);
+    double phi_bl = exp(-2.6e-8 * s->vn14 * g->dm);
     double mu_sl = phi_bl * MU_BL + (1.0 - phi_bl) * MU_EHL;
-    m.M_rr = 1e-3 * phi_ish * phi_rs * G_rr * pow(v * n, 0.6); /* N mm -> N m */
+    m.M_rr = 1e-3 * phi_ish * phi_rs * G_rr * s->vn06; /* N mm -> N m */
     m.M_sl = 1e-3 * mu_sl * G_sl;
     return m;
+}
+
+hg_trb_moment hg_trb_friction(const hg_trb *b, double F_r, double F_a, double nu, double omega)
+{
+    hg_trb_geometry g;
+    hg_trb_speed s;
+    hg_trb_geometry_of(b, &g);
+    hg_trb_speed_of(nu, omega, &s);
+    return hg_trb_friction_at(b, &g, &s, F_r, F_a);
 }
 
 double hg_trb_preload(double F_pre0, double k_ax, double d_alpha, double L, double dT)

@@ -81,6 +81,30 @@ typedef struct {
  * only the boundary sliding (mu_bl) remains. */
 hg_trb_moment hg_trb_friction(const hg_trb *b, double F_r, double F_a, double nu, double omega);
 
+/* The same in parts, for a right-hand side that evaluates it often: the bearing's geometry terms
+ * (once per bearing), the speed and viscosity terms (once per shaft and evaluation: the bearings
+ * of a shaft share them), then the moment at the loads. Powers as exponentials of logarithms,
+ * so an evaluation of a shaft's two bearings takes two logarithms, five exponentials and one
+ * power per bearing. */
+typedef struct {
+    double dm;     /* mean diameter [mm] */
+    double G_rr0;  /* R_1 d_m^2.38 */
+    double G_sl0;  /* S_1 d_m^0.82 */
+    double dm128;  /* d_m^1.28 */
+    double rs;     /* (d + D) sqrt(K_z / (2 (D - d))) [mm^0.5] */
+} hg_trb_geometry;
+
+typedef struct {
+    double vn;      /* nu n [mm^2/s r/min] */
+    double n128v064; /* n^1.28 nu^0.64 */
+    double vn14, vn06; /* (nu n)^1.4, (nu n)^0.6 */
+} hg_trb_speed;
+
+void hg_trb_geometry_of(const hg_trb *b, hg_trb_geometry *g);
+void hg_trb_speed_of(double nu, double omega, hg_trb_speed *s);
+hg_trb_moment hg_trb_friction_at(const hg_trb *b, const hg_trb_geometry *g,
+                                 const hg_trb_speed *s, double F_r, double F_a);
+
 /* Preload [N] of a pair adjusted to F_pre0 and then warmed by dT [K]: a carrier that expands
  * by alpha_c and a steel shaft by alpha_s per kelvin move the cups apart from the cones by
  * d_alpha L dT (d_alpha = alpha_c - alpha_s [1/K]) over the pair's spread L [m], which the

@@ -152,6 +152,7 @@ static int bearings(hg_ledger *a, const hg_vars *v, char *err, size_t errlen)
 int hg_ledger_setup(hg_ledger *a, const hg_vars *v, int gear_set_builtin,
                     const double *file_blank, const hg_lubricant *lub, char *err, size_t errlen)
 {
+    int k;
     a->full = v->axle_losses == HG_AXLE_LOSSES_FULL;
     a->sump = v->thermal_model == HG_THERMAL_MODEL_SUMP;
     a->lub = lub;
@@ -165,6 +166,11 @@ int hg_ledger_setup(hg_ledger *a, const hg_vars *v, int gear_set_builtin,
         return -1;
     if (pair_geometry("pinion", "brg_ph_x", v->brg_ph_x, "brg_pt_x", v->brg_pt_x, err, errlen))
         return -1;
+    for (k = 0; k < HG_N_BRG; k++) hg_trb_geometry_of(&a->brg[k], &a->brg_geom[k]);
+    for (k = 0; k < 2; k++) { /* the components are linear in F_t: per newton, once */
+        a->unit_p[k] = hg_mesh_force_components(&a->pinion, 1.0, k ? 1.0 : -1.0, 1);
+        a->unit_g[k] = hg_mesh_force_components(&a->gear, 1.0, k ? 1.0 : -1.0, 0);
+    }
     a->T_seal_p = hg_seal_torque(v->d_seal_p);
     a->T_seal_w = 2.0 * hg_seal_torque(v->d_seal_w);
     return 0;
@@ -181,12 +187,16 @@ double hg_ledger_nu(const hg_lubricant *lub, double T)
            hg_ledger_rho(lub, T);
 }
 
-/* bearing loads of one shaft from the mesh force on its member and the pair's preload */
-static void shaft_bearings(const hg_ledger *a, const hg_member_geom *m, int driving, double F_t,
-                           double s, int k1, double F_pre, hg_ledger_eval *ev)
+/* bearing loads of one shaft from the mesh force on its member (F_t times its components per
+ * newton, unit) and the pair's preload */
+static void shaft_bearings(const hg_ledger *a, const hg_member_geom *m, const hg_mesh_force *unit,
+                           double F_t, int k1, double F_pre, hg_ledger_eval *ev)
 {
-    hg_mesh_force f = hg_mesh_force_components(m, F_t, s, driving);
+    hg_mesh_force f;
     int k2 = k1 + 1;
+    f.F_t = F_t;
+    f.F_a = F_t * unit->F_a;
+    f.F_r = F_t * unit->F_r;
     hg_shaft_reactions(&f, m->r_m, a->x_brg[k1], a->x_brg[k2], &ev->Fr[k1], &ev->Fr[k2]);
     hg_trb_pair_axial(ev->Fr[k1], a->brg[k1].Y, ev->Fr[k2], a->brg[k2].Y, f.F_a, F_pre,
                       &ev->Fa[k1], &ev->Fa[k2]);
@@ -196,9 +206,12 @@ static void shaft_bearings(const hg_ledger *a, const hg_member_geom *m, int driv
 static double pair_moment(const hg_ledger *a, int k1, double nu, double w, const hg_ledger_eval *ev)
 {
     double M = 0.0;
+    hg_trb_speed sp;
     int k;
+    hg_trb_speed_of(nu, w, &sp); /* the shaft's: both bearings turn at w */
     for (k = k1; k <= k1 + 1; k++) {
-        hg_trb_moment m = hg_trb_friction(&a->brg[k], ev->Fr[k], ev->Fa[k], nu, w);
+        hg_trb_moment m = hg_trb_friction_at(&a->brg[k], &a->brg_geom[k], &sp, ev->Fr[k],
+                                             ev->Fa[k]);
         M += m.M_rr + m.M_sl;
     }
     return M;
@@ -224,11 +237,11 @@ void hg_ledger_losses(const hg_ledger *a, double w_p, double w_g, double W_t, do
                                  a->x_brg[HG_BRG_P_TAIL] - a->x_brg[HG_BRG_P_HEAD], dT);
     ev->F_pre_g = hg_trb_preload(a->F_pre_g, a->k_ax_g, a->d_alpha,
                                  a->x_brg[HG_BRG_G_NEAR] - a->x_brg[HG_BRG_G_FAR], dT);
-    shaft_bearings(a, &a->pinion, 1, fabs(W_t) * R_p / a->pinion.r_m, s, HG_BRG_P_HEAD,
-                   ev->F_pre_p, ev);
+    shaft_bearings(a, &a->pinion, &a->unit_p[s > 0.0], fabs(W_t) * R_p / a->pinion.r_m,
+                   HG_BRG_P_HEAD, ev->F_pre_p, ev);
     /* the carrier: the ring-side bearing takes a thrust away from the ring's apex */
-    shaft_bearings(a, &a->gear, 0, fabs(W_t) * R_g / a->gear.r_m, s, HG_BRG_G_NEAR, ev->F_pre_g,
-                   ev);
+    shaft_bearings(a, &a->gear, &a->unit_g[s > 0.0], fabs(W_t) * R_g / a->gear.r_m,
+                   HG_BRG_G_NEAR, ev->F_pre_g, ev);
     ev->P_bearings_p = opposing(pair_moment(a, HG_BRG_P_HEAD, ev->nu, w_p, ev), w_p, &ev->T_p);
     ev->P_bearings_g = opposing(pair_moment(a, HG_BRG_G_NEAR, ev->nu, w_g, ev), w_g, &ev->T_g);
     ev->P_bearings = ev->P_bearings_p + ev->P_bearings_g;

@@ -20,6 +20,9 @@ typedef struct {
     hg_churn_geom churn;      /* the ring gear in the sump */
     hg_member_geom pinion, gear;
     hg_trb brg[HG_N_BRG];     /* pinion head and tail, carrier ring side and far side */
+    hg_trb_geometry brg_geom[HG_N_BRG]; /* their geometry terms (hg_trb_geometry_of) */
+    hg_mesh_force unit_p[2], unit_g[2]; /* mesh force components per newton of F_t on the
+                                           coast [0] and drive [1] flank (pinion, gear) */
     double x_brg[HG_N_BRG];   /* axial positions from the member's mean point [m] */
     double F_pre_p, F_pre_g;  /* preloads of the pinion and carrier pairs as set at 20 degC [N] */
     double k_ax_p, k_ax_g;    /* axial stiffness of the preloaded pairs [N/m] */
