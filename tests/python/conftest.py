@@ -12,6 +12,52 @@ from hypoid.fmu.instance import Instance
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 FMU_PATH = ROOT / "build" / "HypoidGearPair.fmu"
 
+# `./test.sh --quick` (`pytest -m quick`): the inner loop's subset. Every test is in it but the
+# suites long by design (whole files: the bad-input matrix, the paper's studies, the extremes
+# matrix, the notebook, the installed wheel, the co-simulation scenes, the loaded TCA, the
+# layered tooth data) and the single tests that take seconds each (by function name, every
+# parameter); of the long files a cheap test each stays, so that every layer is touched (the FMI
+# layer and its bad input, each level, tribology, the axle, the master and the drive cycle, the
+# studies' tools, the records, the package). About two minutes on two idle cores, with the C
+# tests; CI runs everything. tests/python/test_quick_mode.py checks that every name here exists.
+SLOW_FILES = {
+    "test_robustness_inputs.py", "test_paper_findings.py", "test_extremes.py",
+    "test_examples.py", "test_installed_package.py", "test_cosim.py", "test_tca_loaded.py",
+    "test_gearset_layers.py",
+}
+SLOW_TESTS = {
+    "test_drive_cycle.py::test_the_default_level_gives_the_full_levels_axle_loss",
+    "test_drive_cycle.py::test_full_level_launches_from_a_standstill",
+    "test_drive_cycle.py::test_libcosim_and_fmpy_masters_agree_on_the_axle_loss",
+    "test_drive_cycle.py::test_wltc_launch_energy_audit_closes_to_1e_6",
+    "test_gearset_blank.py::test_design_writes_the_builtin_loaded_file_from_table_1",
+    "test_modes.py::test_dte_gain_against_a_time_domain_run",
+    "test_sweeps.py::test_local_pool_and_a_dask_scheduler_match_the_serial_run",
+    "test_sweeps.py::test_a_signal_ends_the_sweep_and_its_workers",
+    "test_model_exchange.py::test_gear_and_vehicle_as_one_ode_against_co_simulation",
+    "test_generated_docs.py::test_a_changed_figure_fails_the_check",
+    "test_mesh_law.py::test_dte_against_the_reference_model",
+}
+QUICK_FROM_SLOW = {
+    "test_robustness_inputs.py::test_impossible_axle_and_oil_data_fail_naming_the_variable",
+    "test_robustness_inputs.py::test_instantiate_arguments",
+    "test_cosim.py::test_vehicle_initial_state_and_energy_closure",
+    "test_tca_loaded.py::test_two_equal_pairs_share_the_load_equally",
+    "test_gearset_layers.py::test_tooth_data_picks_the_built_in_file",
+    "test_examples.py::test_notebook_is_made_from_the_script",
+}
+
+
+def pytest_configure(config):
+    config.addinivalue_line("markers", "quick: the inner loop's subset (./test.sh --quick)")
+
+
+def pytest_collection_modifyitems(config, items):
+    for item in items:
+        name, test = item.path.name, f"{item.path.name}::{item.originalname}"
+        if test in QUICK_FROM_SLOW or (name not in SLOW_FILES and test not in SLOW_TESTS):
+            item.add_marker(pytest.mark.quick)
+
 
 @pytest.fixture(scope="session")
 def fmu_path():
