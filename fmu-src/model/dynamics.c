@@ -252,8 +252,10 @@ static void axle_losses(const hg_dyn_params *p, const double *y, hg_dyn_eval *ev
  * shaft quasi-static (hg_dyn_quasi_static_input: the map level's, or input_shaft = quasi_static)
  * the body includes the input shaft's end, the shaft a massless spring carrying
  * T_1 = T_s - I_s acc to the pinion.
- * Friction needs the load and changes the acceleration: one pass from the frictionless load
- * suffices (the friction torques change W_t by a fraction mu of the inertial part). */
+ * Friction needs the load and changes the acceleration: the axle's torques are taken into the
+ * load first (from the frictionless load; they depend on it only through the bearing loads),
+ * then one pass of the mesh friction from that load suffices (its torques change W_t by a
+ * fraction mu of the inertial part). */
 static void rigid_mesh(const hg_dyn_params *p, const hg_inputs *u, const double *y,
                        int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
@@ -261,10 +263,15 @@ static void rigid_mesh(const hg_dyn_params *p, const hg_inputs *u, const double 
     double i = p->ratio, I_s = qs ? p->I_s : 0.0, J = I_s + p->I_p + p->I_g / (i * i);
     double T_in = qs ? u->T_s : shaft1_torque(p, y), T_2 = shaft2_torque(p, y), acc, T_p, T_g;
     acc = (T_in - T_2 / i) / J;
-    ev->T_1 = T_in - I_s * acc;
     ev->W_t = (p->I_g * acc / i + T_2) / ev->R_g;
     net_force_loads(ev);
     axle_losses(p, y, ev);
+    /* the load the mesh friction sees: with the axle's bearing, seal and churning torques, which
+     * are not small against the mesh's (a no-load drag of several N m at the pinion) */
+    acc = (T_in - T_2 / i + ev->axle.T_p + ev->axle.T_g / i) / J;
+    ev->T_1 = T_in - I_s * acc;
+    ev->W_t = (p->I_g * acc / i + T_2 - ev->axle.T_g) / ev->R_g;
+    net_force_loads(ev);
     losses(p, y, all_pairs, T_c_warm, ev);
     T_p = ev->T_fp + ev->axle.T_p;
     T_g = ev->T_fg + ev->axle.T_g;

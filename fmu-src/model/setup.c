@@ -263,11 +263,13 @@ static void ehl_params(hg_setup *s, const hg_vars *v)
                         : v->shear_pressure == HG_SHEAR_PRESSURE_HERTZ ? HG_SHEAR_P_HERTZ
                                                                        : HG_SHEAR_P_MEAN;
     e->relaxation = v->relaxation == HG_RELAXATION_TTPS ? HG_RELAX_TTS : HG_RELAX_CONSTANT;
+    e->inlet_heating = v->inlet_heating == HG_INLET_HEATING_GUPTA;
     if (paper_friction(v)) { /* the paper's choices together */
         e->roelands_Z = HG_Z_SIMPLE;
         e->shear_pressure = HG_SHEAR_P_MEAN;
         e->relaxation = HG_RELAX_CONSTANT;
         e->Lambda_cap = 0.0;
+        e->inlet_heating = 0;
     }
     e->thermal = v->friction_model == HG_FRICTION_MODEL_EHL_THERMAL;
     held = s->z_table;

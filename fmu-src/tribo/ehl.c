@@ -133,16 +133,25 @@ static void stage_hertz(ehl_eval *e)
     e->out->p_h = e->st.hertz.p_max;
 }
 
-/* film at the inlet temperature (eq. 10; D7 of docs/physics.md §0) */
+/* film at the inlet temperature (eq. 10; D7 of docs/physics.md §0), thinned by the inlet's shear
+ * heating when asked (film.h) */
 static void stage_film(ehl_eval *e)
 {
     hg_rheo_state in;
+    e->k_f = e->p->k_f_override > 0.0 ? e->p->k_f_override : e->lub->k_f;
     hg_rheology_init(&e->sc.rh, e->lub, e->p->roelands_Z == HG_Z_EXACT, e->p->z_table);
     hg_rheology_at(&e->sc.rh, e->st.T_in, &in);
     e->st.eta0_in = exp(in.ln_eta0);
     e->st.alpha_in = in.alpha;
     e->h_c = hg_film_chittenden(e->st.eta0_in, e->st.alpha_in, e->kin.u_e, e->c->W,
                                 e->st.E_star, e->out->R_e, e->out->R_s);
+    e->st.phi_T = 1.0;
+    if (e->p->inlet_heating && e->kin.u_e > HG_SPEED_FLOOR) {
+        double L = -in.dL0 * e->st.eta0_in * e->kin.u_e * e->kin.u_e / e->k_f;
+        e->st.phi_T = hg_film_thermal_reduction(L, e->kin.v_s / e->kin.u_e,
+                                                e->st.hertz.p_max / e->st.E_star);
+        e->h_c *= e->st.phi_T;
+    }
     if (!(e->h_c >= HG_EHL_H_MIN)) {
         e->h_c = HG_EHL_H_MIN;
         e->st.flags |= HG_EHL_H_FLOORED;
@@ -213,7 +222,6 @@ static void stage_network(ehl_eval *e)
     const hg_hertz *hz = &e->st.hertz;
     hg_ehl_stats *st = &e->st;
     double chi_s = p->k_s / (p->rho_s * p->c_s);
-    e->k_f = p->k_f_override > 0.0 ? p->k_f_override : e->lub->k_f;
     st->l_p = hg_coleman_length(hz->s_y, hz->s_x, e->c->u_p[0], e->c->u_p[1]);
     st->l_g = hg_coleman_length(hz->s_y, hz->s_x, e->c->u_g[0], e->c->u_g[1]);
     st->R_fp = hg_moving_source_resistance(hz->A, p->k_s, chi_s, st->l_p, e->kin.U_p);

@@ -51,6 +51,8 @@ typedef struct {
     int shear_pressure;     /* hg_shear_pressure (HG_SHEAR_P_MEAN) */
     int relaxation;         /* hg_relaxation (HG_RELAX_CONSTANT) */
     int thermal;            /* 1: solve T_c (default); 0: isothermal, shear at T_in */
+    int inlet_heating;      /* 1: the film thinned by the inlet's shear heating (Gupta et al.'s
+                               thermal reduction factor, film.h); 0: isothermal film (the paper) */
 } hg_ehl_params;
 
 /* Diagnostics, filled by hg_ehl_pair_ex when a non-NULL pointer is passed. */
@@ -72,6 +74,7 @@ typedef struct {
     double E_star;      /* [Pa] */
     double eta0_in;     /* eta_0(T_in) [Pa s] */
     double alpha_in;    /* alpha*(T_in) [1/Pa] */
+    double phi_T;       /* inlet-heating reduction of the film [-] (1 without it) */
     double W_asp;       /* [N] */
     double A_asp;       /* [m^2] */
     double gamma_dot;   /* [1/s] */

@@ -16,3 +16,12 @@ double hg_film_chittenden(double eta0, double alpha_star, double u_e, double W, 
     /* eq. 10 */
     return 4.31 * R_e * exp(0.68 * lnU + 0.49 * lnG - 0.073 * lnW) * (1.0 - exp(-1.23 * r23));
 }
+
+double hg_film_thermal_reduction(double L, double srr, double ph_over_E)
+{
+    double num, den;
+    if (!(L > 0.0)) return 1.0;
+    num = 1.0 - 13.2 * ph_over_E * pow(L, 0.42);
+    den = 1.0 + 0.213 * (1.0 + 2.23 * pow(fabs(srr), 0.83)) * pow(L, 0.64);
+    return num > 0.0 ? num / den : 0.0;
+}

@@ -11,4 +11,14 @@
 double hg_film_chittenden(double eta0, double alpha_star, double u_e, double W, double E_star,
                           double R_e, double R_s);
 
+/* Thermal reduction factor of the central film for the shear heating of the inlet (Gupta, Cheng,
+ * Zhu, Forster, Schrand, Tribol. Trans. 35 (1992) 269-274):
+ *   phi_T = (1 - 13.2 (p_h/E*) L^0.42) / (1 + 0.213 (1 + 2.23 S^0.83) L^0.64)
+ * with the thermal loading L = beta eta_0 u_e^2 / k_f (beta = -d ln eta_0/dT [1/K], eta_0 [Pa s]
+ * and k_f [W/(m K)] at the inlet temperature, u_e the entrainment speed [m/s]) and the
+ * slide-to-roll ratio S = |V_s|/u_e. The numerator is floored at 0 (it falls below zero only at
+ * thermal loadings beyond those of the fit, where the denominator already thins the film a
+ * hundredfold). Returns phi_T in [0, 1]; 1 when L = 0. */
+double hg_film_thermal_reduction(double L, double srr, double ph_over_E);
+
 #endif

@@ -49,7 +49,7 @@ MESH_FRICTION = frozenset({    # the friction model and its data: not in the bui
     "gear_set_file", "lubricant_file", "mu_const", "E", "nu", "k_s", "rho_s", "c_s", "tau_0",
     "varsigma_a", "sigma_s", "eta_beta_sigma", "sigma_over_beta", "T_inlet_rise", "Lambda_cap",
     "k_f", "hertz_model", "roelands_z", "shear_pressure", "relaxation", "friction_preset",
-    "friction_table", "tooth_data", "preset"})
+    "friction_table", "tooth_data", "preset", "inlet_heating"})
 MESH_DYNAMICS = frozenset({    # the compliant mesh only: the full level
     "b", "backlash_model", "backlash_smoothing", "k_m_scale", "e_0_scale"})
 

@@ -78,6 +78,11 @@ RECORDS = {r.name: r for r in [
     Record("axle-loss-map", "The axle's loss map",
            "steady losses by part and eta_axle of gear set 1 at 40 and 80 °C over speed and "
            "torque", ("axle-loss-map.json",), "python tools/axle_loss_map.py", R + "pages:tables_page"),
+    Record("validation", "The axle's losses against what is measured and published",
+           "bearing loss against torque, spin loss at SAE J2985's temperatures, churning and "
+           "mesh friction against the oil temperature (beside Xu et al. and ISO/TR 14179-2), "
+           "the pinion bearings' share", ("validation.json",),
+           "python tools/axle_trends.py --record", R + "pages:tables_page"),
     Record("drive-cycle", "The axle over a drive cycle",
            "WLTC class 3b: losses by part and phase cold and warm, cost and axle loss of the map, "
            "fast and full levels, the energy audit",

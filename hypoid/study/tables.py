@@ -13,7 +13,7 @@ BUILTIN_LUBRICANTS = {1: "OS265962", 2: "OS265963"}
 # the paper's EHL choices spelled out (the FMU's defaults follow the traction evidence instead,
 # docs/friction-evidence.md)
 PAPER_EHL = {"roelands_z": "simple", "shear_pressure": "mean", "Lambda_cap": 0.0,
-             "relaxation": "constant"}
+             "relaxation": "constant", "inlet_heating": "none"}
 # with the paper's calibrated one-series tooth data (the FMU's default is the loaded data;
 # preset = paper selects both, but would override a study's variant of one)
 PAPER_CHOICES = {**PAPER_EHL, "tooth_data": "paper"}

@@ -75,5 +75,14 @@ int main(void)
     /* degenerate inputs give 0, never NaN */
     CHECK(hg_film_chittenden(ETA0, ALPHA, 0.0, W, ES, RX, 1.0) == 0.0);
     CHECK(hg_film_chittenden(ETA0, ALPHA, 1.0, 0.0, ES, RX, 1.0) == 0.0);
+    /* Gupta et al.'s thermal reduction factor by hand: L = 17, S = 0.72, p_h/E* = 0.0031:
+     * numerator 1 - 13.2 0.0031 17^0.42 = 0.8654994, denominator 1 + 0.213 (1 + 2.23 0.72^0.83)
+     * 17^0.64 = 4.5227301 -> 0.1913666; no thermal loading -> 1; a loading beyond the fit's range
+     * (L = 6720 at 2 GPa, numerator -3.65) -> 0; thinner as the loading or the sliding grows */
+    CHECK_CLOSE(hg_film_thermal_reduction(17.0, 0.72, 0.0031), 0.19136658, 1e-7, 0);
+    CHECK(hg_film_thermal_reduction(0.0, 0.72, 0.0031) == 1.0);
+    CHECK(hg_film_thermal_reduction(6720.0, 0.72, 0.0087) == 0.0);
+    CHECK(hg_film_thermal_reduction(20.0, 0.72, 0.0031) < hg_film_thermal_reduction(17.0, 0.72, 0.0031));
+    CHECK(hg_film_thermal_reduction(17.0, 1.0, 0.0031) < hg_film_thermal_reduction(17.0, 0.72, 0.0031));
     CHECK_DONE();
 }

@@ -175,7 +175,10 @@ static void test_setup_and_step(void)
  * within 1.3e-6 and 4.2e-6 (the iterated friction solve's own scatter, which does not scale with
  * rtol). A start without the friction torques gives the same orders on this code (1.1e-6 /
  * 1.0e-6 direct, 1.8e-7 / 3.5e-9 with the table), so this guards the audit through the start,
- * not the start itself: the torque balance of test_setup_and_step is what the old start fails. */
+ * not the start itself: the torque balance of test_setup_and_step is what the old start fails.
+ * With the film thinned by the inlet's shear heating (the default since) the varying mesh with
+ * the table leaves 1.3e-6 after the first step, the integrator's error (6.4e-7 at rtol 1e-7,
+ * 6e-8 at 1e-8), so the table's bound is 2e-6. */
 static void test_start_audit(void)
 {
     static const int meshes[2] = {HG_MESH_MODEL_VARYING, HG_MESH_MODEL_RIGID};
@@ -199,7 +202,7 @@ static void test_start_audit(void)
                 CHECK(hg_model_step(m, &v, &du, 1e-3, err, sizeof err) == 0);
                 hg_model_outputs(m, &v, HG_OUTSET_MAIN);
                 CHECK(v.E_in > 0.0);
-                CHECK_CLOSE(audit(&v), v.E_stored - E0, 0.0, (table ? 1e-6 : 1e-5) * v.E_in);
+                CHECK_CLOSE(audit(&v), v.E_stored - E0, 0.0, (table ? 2e-6 : 1e-5) * v.E_in);
             }
             hg_model_free(m);
         }

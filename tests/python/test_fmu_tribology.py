@@ -110,11 +110,12 @@ def test_isothermal_friction_is_higher_than_thermal(fmu_path, default):
     assert 1.5 < ratio < 15
 
 
-def test_paper_preset_is_the_four_paper_choices(fmu_path, default):
+def test_paper_preset_is_the_five_paper_choices(fmu_path, default):
     spelled = run(fmu_path, friction_preset=ENUMERATIONS["friction_preset"]["parameters"],
                   roelands_z=ENUMERATIONS["roelands_z"]["simple"],
                   shear_pressure=ENUMERATIONS["shear_pressure"]["mean"], Lambda_cap=0.0,
-                  relaxation=ENUMERATIONS["relaxation"]["constant"])
+                  relaxation=ENUMERATIONS["relaxation"]["constant"],
+                  inlet_heating=ENUMERATIONS["inlet_heating"]["none"])
     for name in OUT:
         assert np.array_equal(spelled[name], default[name]), name
 
