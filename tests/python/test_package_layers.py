@@ -103,11 +103,14 @@ def test_scripts_use_public_names_only():
 
 
 def test_one_fmu_access_class():
-    """hypoid.fmu.instance.Instance is the one way tools, tests and benchmarks reach an FMU:
-    nothing subclasses it to give it other names (raw fmpy calls go through its `slave`)."""
+    """hypoid.fmu is the one way tools, tests and benchmarks reach an FMU: its Instance (and, in the
+    same access layer, its Model Exchange form) is never subclassed elsewhere to give it other
+    names (raw fmpy calls go through its `slave`)."""
     wrong = []
     for folder in ("hypoid", "tests", "bench", "tools", "examples"):
         for path in sorted((ROOT / folder).rglob("*.py")):
+            if path.parent == ROOT / "hypoid" / "fmu":
+                continue
             for node in ast.walk(ast.parse(path.read_text())):
                 if isinstance(node, ast.ClassDef) and any(
                         ast.unparse(base).split(".")[-1] == "Instance" for base in node.bases):
