@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what the project needs on a fresh Debian/Ubuntu machine and builds the FMU:
-#   apt: a C compiler, cmake, SUNDIALS (static archives), python3 with venv; for the win64
-#        binary mingw-w64 and wine64 (scripts/win64.sh);
+#   apt: a C compiler, cmake, SUNDIALS (static archives), python3 with venv; libtbb12 (Ecos'
+#        engine); for the win64 binary mingw-w64 and wine64 (scripts/win64.sh);
 #   .venv: the hypoid package with its pinned dependencies;
 #   build/third_party/: the Debian source packages of musl and SUNDIALS (scripts/third_party.sh),
 #        and SUNDIALS built from it with optimisation for linux64 (scripts/sundials.sh); the FMI
@@ -17,6 +17,10 @@ command -v cmake >/dev/null || need_apt+=(cmake)
 python3 -c 'import venv, ensurepip' 2>/dev/null || need_apt+=(python3-venv)
 python3 -c 'import sys; sys.exit(sys.version_info < (3, 11))' 2>/dev/null || need_apt+=(python3)
 scripts/ensure_apt.sh "${need_apt[@]}"
+# Ecos (ecospy, a test extra) ships its engine built against Debian's TBB: without libtbb12 its
+# tests skip with the reason (hypoid.cosim.ecos.why_unavailable)
+scripts/ensure_apt.sh libtbb12 || echo "setup: WARNING - libtbb12 could not be installed;" \
+  "the tests that run Ecos skip" >&2
 
 if [ ! -x .venv/bin/python ] || ! .venv/bin/python -c 'import hypoid, fmpy, pytest' 2>/dev/null \
    || [ pyproject.toml -nt .venv/.installed ]; then

@@ -7,18 +7,19 @@ docs/integration.md."""
 
 import pathlib
 
+from hypoid.cosim import host
 from hypoid.errors import UsageError
+
+
+def _load():
+    from libcosimpy._internal import libcosimc
+
+    libcosimc()
 
 
 def why_unavailable():
     """None when libcosimpy loads here, else why not (one line)."""
-    try:
-        from libcosimpy._internal import libcosimc
-
-        libcosimc()
-    except Exception as e:  # noqa: BLE001 - any failure means: not usable here
-        return f"{type(e).__name__}: {e}"
-    return None
+    return host.why_not(_load)
 
 
 def intenum_fmu(fmu):
@@ -44,11 +45,10 @@ class Execution:
     observer. libcosim initialises the FMUs inside the first step (its C API has no separate
     call), so outputs are readable after a step only."""
 
+    outputs_at_start = False
+
     def __init__(self, h):
-        why = why_unavailable()
-        if why:
-            raise UsageError(f"libcosim is not usable here ({why}): pip install "
-                             "libcosimpy==0.0.6 (Linux x86_64)")
+        host.require("libcosim", why_unavailable, "pip install libcosimpy==0.0.6 (Linux x86_64)")
         from libcosimpy.CosimExecution import CosimExecution
         from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
         from libcosimpy.CosimManipulator import CosimManipulator

@@ -291,34 +291,62 @@ def measures(r, ref, scene):
     return out
 
 
-def run_libcosim(scene, coupling, h, gear_fmu, vehicle_fmu):
-    """The scene in libcosim's fixed-step (Jacobi) algorithm: the integer-coded gear FMU
-    (gear_fmu: <name>_intenum.fmu), the links of the coupling, T_s through the override
-    manipulator at the profile's mean over each step. libcosim gives outputs after a step only:
-    the row of t = 0 is left out (the returned Run starts at t = h)."""
-    from hypoid.cosim.libcosim import Execution
+def run_host(Execution, scene, coupling, h, gear_fmu, vehicle_fmu):
+    """The scene in a host's fixed-step (Jacobi) algorithm: `Execution` is the driver's class
+    (hypoid.cosim.libcosim.Execution or hypoid.cosim.ecos.Execution, which take the same calls),
+    gear_fmu the integer-coded gear FMU (<name>_intenum.fmu: neither host sets Enumerations), the
+    links of the coupling its connections, T_s set before each step at the profile's mean over
+    it. Rows as run()'s from t = 0 where the host has outputs after its initialisation
+    (Execution.outputs_at_start: Ecos); libcosim initialises inside the first step, so its Run
+    starts at t = h. A step that the host or an FMU refused ends the run (Run.failed)."""
     ex = Execution(h)
-    ex.add("gear", gear_fmu)
-    ex.add("vehicle", vehicle_fmu)
-    gs, vs = _start_values(scene, coupling)
-    ex.initial("gear", gs)
-    ex.initial("vehicle", vs)
-    for src, out, dst, inp in COUPLINGS[coupling]["links"]:
-        ex.connect(src, out, dst, inp)
-    refs = {"gear": [ex.ref("gear", v) for v in GEAR_OUT],
-            "vehicle": [ex.ref("vehicle", v) for v in VEHICLE_OUT]}
-    n = int(round(scene.stop_time / h))
-    r = Run(coupling, "jacobi", h, scene.name, t=np.arange(1, n + 1) * h, T_s=np.empty(n))
-    rows = {"gear": [], "vehicle": []}
-    cpu = time.process_time()
-    for k in range(n):
-        r.T_s[k] = scene.mean_torque(k * h, h)
-        ex.set_reals("gear", ["T_s"], [r.T_s[k]])
-        ex.step()
-        for side in rows:
-            rows[side].append(list(ex.reals(side, refs[side])))
-    r.cpu = time.process_time() - cpu
-    r.gear = {v: np.array([row[j] for row in rows["gear"]]) for j, v in enumerate(GEAR_OUT)}
-    r.vehicle = {v: np.array([row[j] for row in rows["vehicle"]])
-                 for j, v in enumerate(VEHICLE_OUT)}
+    try:
+        ex.add("gear", gear_fmu)
+        ex.add("vehicle", vehicle_fmu)
+        gs, vs = _start_values(scene, coupling)
+        ex.initial("gear", gs)
+        ex.initial("vehicle", vs)
+        links = COUPLINGS[coupling]["links"]
+        for src, out, dst, inp in links:
+            ex.connect(src, out, dst, inp)
+        names = {side: outs + [l[1] for l in links if l[0] == side and l[1] not in outs]
+                 for side, outs in (("gear", GEAR_OUT), ("vehicle", VEHICLE_OUT))}
+        refs = {side: [ex.ref(side, v) for v in names[side]] for side in names}
+        n, first = int(round(scene.stop_time / h)), 0 if ex.outputs_at_start else 1
+        r = Run(coupling, "jacobi", h, scene.name)
+        rows, T_s = [], []
+
+        def read():
+            rows.append({side: list(ex.reals(side, refs[side])) for side in refs})
+
+        if first == 0:
+            read()
+        cpu = time.process_time()
+        try:
+            for k in range(n):
+                T_s.append(scene.mean_torque(k * h, h))
+                ex.set_reals("gear", ["T_s"], [T_s[-1]])
+                ex.step()
+                read()
+        except RuntimeError as e:
+            r.failed = f"step {k * h:.3f}-{(k + 1) * h:.3f} s: {str(e)[:160]}"
+        r.cpu = time.process_time() - cpu
+    finally:
+        ex.close()
+    r.t = (np.arange(len(rows)) + first) * h
+    r.T_s = np.array((T_s + T_s[-1:])[:len(rows)])  # T_s[k]: held over step k
+    r.gear, r.vehicle = ({v: np.array([row[side][j] for row in rows])
+                          for j, v in enumerate(names[side])} for side in ("gear", "vehicle"))
     return r
+
+
+def run_libcosim(scene, coupling, h, gear_fmu, vehicle_fmu):
+    """run_host in libcosim (libcosimpy)."""
+    from hypoid.cosim.libcosim import Execution
+    return run_host(Execution, scene, coupling, h, gear_fmu, vehicle_fmu)
+
+
+def run_ecos(scene, coupling, h, gear_fmu, vehicle_fmu):
+    """run_host in Ecos (ecospy)."""
+    from hypoid.cosim.ecos import Execution
+    return run_host(Execution, scene, coupling, h, gear_fmu, vehicle_fmu)

@@ -37,6 +37,7 @@ SLOW_TESTS = {
     "test_model_exchange.py::test_gear_and_vehicle_as_one_ode_against_co_simulation",
     "test_generated_docs.py::test_a_changed_figure_fails_the_check",
     "test_mesh_law.py::test_dte_against_the_reference_model",
+    "test_coupling.py::test_ecos_stops_where_an_fmu_refuses_its_input",
 }
 QUICK_FROM_SLOW = {
     "test_robustness_inputs.py::test_impossible_axle_and_oil_data_fail_naming_the_variable",
