@@ -4,9 +4,13 @@ communication step, in each scene, against a fine reference (docs/integration.md
 
     python bench/coupling_matrix.py [--couplings half_shaft torque] [--masters jacobi ...]
         [--steps 1e-4 5e-4 1e-3 2e-3 5e-3 1e-2] [--scenes cruise tip launch downhill]
-        [--gear build/HypoidGearPair.fmu] [--vehicle build/LongitudinalVehicle.fmu]
-        [--json OUT] [--label " (before)"]
+        [--hosts fmpy ecos libcosim] [--gear build/HypoidGearPair.fmu]
+        [--vehicle build/LongitudinalVehicle.fmu] [--json OUT] [--label " (before)"]
     python bench/coupling_matrix.py --record OUT1.json [OUT2.json ...]   # the record's data
+
+Hosts: fmpy (tests/cosim/coupling_master.py's masters, every master) and, for the Jacobi master,
+Ecos and libcosim (their fixed-step algorithms: coupling_master.run_ecos, run_libcosim, with the
+integer-coded gear FMU the build writes next to --gear), where their libraries load.
 
 Per cell: stable (mesh-force spread within 1.5x the reference's in the scene's flat windows),
 that spread over the reference's, w_p's largest error over max |w_p| of the reference, the energy
@@ -17,7 +21,7 @@ coupling's, not the sampling of the driver's input).
 Targets (Jacobi, every step, cruise and tip): spread <= 1.5x, |energy| <= 1e-3, w_p <= 1e-3, the
 1 ms run no dearer than the 0.5 ms one. --record merges --json files into the record's data,
 docs/records/coupling-matrix.json (`hypoid records coupling-matrix` writes its page). The full
-matrix costs about 15 min of CPU per coupling.""" 
+matrix costs about 15 min of CPU per coupling."""
 
 import argparse
 import json
@@ -32,6 +36,12 @@ sys.path.insert(0, str(ROOT / "tests" / "cosim"))
 sys.path.insert(0, str(ROOT))
 
 import coupling_master as cm  # noqa: E402
+from hypoid.cosim import ecos, libcosim  # noqa: E402
+
+# host: (its run, why it does not load here); the outside hosts run the Jacobi master only
+HOSTS = {"fmpy": None,
+         "ecos": (cm.run_ecos, ecos.why_unavailable),
+         "libcosim": (cm.run_libcosim, libcosim.why_unavailable)}
 
 STEPS = [1e-4, 5e-4, 1e-3, 2e-3, 5e-3, 1e-2]
 H_REF = 5e-5
@@ -61,15 +71,17 @@ def record(rows, steps, scenes, provenance):
                "iterative master, the vehicle FMU had no FMU states). Reference: the half-shaft "
                f"coupling under Gauss-Seidel at {H_REF * 1e3:g} ms with the driver's torque held "
                "over each step of the column. Every input held over the step (no input "
-               "derivatives); fmpy's FMU2Slave in tests/cosim/coupling_master.py. `before`: the "
-               "FMUs before the half-shaft coupling (the gear's torque load mode against the "
-               "vehicle's half-shaft coupling 1); the iterative master could not run them (the vehicle "
-               "FMU had no FMU states)."}]
+               "derivatives). Hosts: fmpy's FMU2Slave under the masters of "
+               "tests/cosim/coupling_master.py; Ecos (ecospy) and libcosim (libcosimpy), their "
+               "fixed-step algorithms (Jacobi), with the integer-coded gear FMU; libcosim "
+               "initialises inside its first step, so its cells are measured from t = h. "
+               "`torque`: the connection before the half-shaft coupling (the gear's torque load "
+               "mode against the vehicle's half-shaft coupling 1)."}]
     for scene in scenes:
         keys = sorted({(r["coupling"], r["master"], r["host"]) for r in rows
                        if r["scene"] == scene},
                       key=lambda k: (not k[0].startswith("half_shaft"), k[0],
-                                     cm.MASTERS.index(k[1]), k[2]))
+                                     cm.MASTERS.index(k[1]), list(HOSTS).index(k[2])))
         table = []
         for key in keys:
             cells = []
@@ -91,6 +103,8 @@ def main():
     ap.add_argument("--masters", nargs="+", default=list(cm.MASTERS))
     ap.add_argument("--steps", type=float, nargs="+", default=STEPS)
     ap.add_argument("--scenes", nargs="+", default=list(cm.SCENES))
+    ap.add_argument("--hosts", nargs="+", default=list(HOSTS), choices=list(HOSTS),
+                    help="the outside hosts run the Jacobi master, where they load")
     ap.add_argument("--gear", default=str(ROOT / "build" / "HypoidGearPair.fmu"))
     ap.add_argument("--vehicle", default=str(ROOT / "build" / "LongitudinalVehicle.fmu"))
     ap.add_argument("--reference-gear", help="the FMUs of the reference (default: --gear)")
@@ -117,6 +131,14 @@ def main():
         out = ROOT / "docs" / "records" / "coupling-matrix.json"
         out.write_text(json.dumps(data, indent=1, ensure_ascii=False) + "\n")
         return 0
+    hosts = []
+    for host in args.hosts:
+        why = HOSTS[host] and HOSTS[host][1]()
+        if why:
+            print(f"coupling_matrix: {host} is not usable here ({why}): left out", file=sys.stderr)
+        else:
+            hosts.append(host)
+    gear_intenum = libcosim.intenum_fmu(args.gear) if set(hosts) - {"fmpy"} else None
     rows = []
     for name in args.scenes:
         scene = cm.SCENES[name]
@@ -129,9 +151,13 @@ def main():
             for master in args.masters:
                 for h in args.steps:
                     ref = refs[h]
-                    for host in ("fmpy",):
+                    for host in hosts:
+                        if host != "fmpy" and master != "jacobi":
+                            continue
                         try:
-                            r = cm.run(scene, coupling, master, h, args.gear, args.vehicle)
+                            r = (cm.run(scene, coupling, master, h, args.gear, args.vehicle)
+                                 if host == "fmpy" else
+                                 HOSTS[host][0](scene, coupling, h, gear_intenum, args.vehicle))
                         except Exception as e:  # a master the FMUs cannot run (no FMU states)
                             rows.append({"scene": name, "coupling": coupling + args.label,
                                          "master": master,

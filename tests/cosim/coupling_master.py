@@ -241,16 +241,16 @@ def _step(sides, outs, master, tk, h, inputs_of):
 
 
 def energy(r):
-    """The coupled system's energy residual over the run and its scale (J): the work of T_s on the
-    gear against what both FMUs dissipated and stored (docs/cosimulation.md, "Energy")."""
-    g, v = r.gear, r.vehicle
-    w_ts = g["E_in"][-1]
-    gear = g["E_friction"][-1] + g["E_damping"][-1] - g["E_excitation"][-1] \
-        + g["E_stored"][-1] - g["E_stored"][0]
-    veh = v["E_kin"][-1] - v["E_kin"][0] + v["E_spring"][-1] - v["E_spring"][0] \
-        + v["E_road"][-1] + v["E_grade"][-1] + v["E_damper"][-1] + v["E_brake"][-1]
+    """The coupled system's energy residual over the run's rows and its scale (J): the work of T_s
+    on the gear against what both FMUs dissipated and stored (docs/cosimulation.md, "Energy"),
+    each a change from the first row (the FMUs count from their start: a run whose rows start at
+    t = h, libcosim's, is measured over its own span)."""
+    g, v = ({k: x[-1] - x[0] for k, x in side.items()} for side in (r.gear, r.vehicle))
+    w_ts = g["E_in"]
+    gear = g["E_friction"] + g["E_damping"] - g["E_excitation"] + g["E_stored"]
+    veh = v["E_kin"] + v["E_spring"] + v["E_road"] + v["E_grade"] + v["E_damper"] + v["E_brake"]
     # the input work: what T_s did plus what the grade gave back (engine braking downhill)
-    scale = abs(w_ts) + max(-v["E_grade"][-1], 0.0)
+    scale = abs(w_ts) + max(-v["E_grade"], 0.0)
     return w_ts - gear - veh, scale
 
 
@@ -273,9 +273,8 @@ def measures(r, ref, scene):
         out.update(stable=False, std_ratio=math.inf, w_p_err=math.inf, w_p_rms=math.inf,
                    energy=math.inf)
         return out
-    k = int(round(r.h / ref.h))
-    ref_W = ref.gear["W_t"][::k][:len(r.t)]
-    ref_wp = ref.gear["w_p"][::k][:len(r.t)]
+    at = np.rint(r.t / ref.h).astype(int)  # the reference's rows at the run's instants
+    ref_W, ref_wp = ref.gear["W_t"][at], ref.gear["w_p"][at]
     mask = np.array([scene.flat(t) for t in r.t])
     s_run, s_ref = _spread(r.gear["W_t"], mask), _spread(ref_W, mask)
     # a floor for the reference's spread: 1 % of its mean force (a steady run's ripple)
