@@ -11,7 +11,8 @@ SKF model (SKF rolling bearings catalogue, "The SKF model for calculating the fr
 moment"; tapered roller bearings): M = phi_ish phi_rs G_rr (nu n)^0.6 + G_sl mu_sl,
   G_rr = R1 d_m^2.38 (F_r + R2 Y F_a)^0.31,  G_sl = S1 d_m^0.82 (F_r + S2 Y F_a),
   phi_ish = 1 / (1 + 1.84e-9 (n d_m)^1.28 nu^0.64),
-  phi_rs = exp(-K_rs nu n (d + D) sqrt(K_z / (2 (D - d)))),  K_rs = 3e-8, K_z = 6,
+  phi_rs = exp(-K_rs nu n (d + D) sqrt(K_z / (2 (D - d)))),  K_z = 6, K_rs = 0 for the
+  flooded bearings of the FMU's default (brg_feed = flooded), 3e-8 for a low-level bath or jet,
   mu_sl = phi_bl mu_bl + (1 - phi_bl) mu_EHL,  phi_bl = exp(-2.6e-8 (n nu)^1.4 d_m),
   mu_bl = 0.15, mu_EHL = 0.002; R2 = 10.9, S2 = 2 [N mm, mm, mm^2/s, r/min]. No seal term
   (open bearings), no drag term (the bath stays below the bearings)."""
@@ -53,13 +54,16 @@ def nu_mm2s(T_C, lub=lubricant()):
     return lub["vogel_a"] * math.exp(lub["vogel_b"] / (T - lub["vogel_c"])) / rho * 1e6
 
 
-def skf(d, D, Y, R1, S1, F_a, n, nu, F_r=0.0):
+K_RS = {"flooded": 0.0, "low_level": 3e-8}  # brg_feed
+
+
+def skf(d, D, Y, R1, S1, F_a, n, nu, F_r=0.0, feed="flooded"):
     """(rolling, sliding) moments [N m] of one bearing; d, D [mm]."""
     d_m = 0.5 * (d + D)
     G_rr = R1 * d_m ** 2.38 * (F_r + 10.9 * Y * F_a) ** 0.31
     G_sl = S1 * d_m ** 0.82 * (F_r + 2.0 * Y * F_a)
     phi_ish = 1.0 / (1.0 + 1.84e-9 * (n * d_m) ** 1.28 * nu ** 0.64)
-    phi_rs = math.exp(-3e-8 * nu * n * (d + D) * math.sqrt(6.0 / (2.0 * (D - d))))
+    phi_rs = math.exp(-K_RS[feed] * nu * n * (d + D) * math.sqrt(6.0 / (2.0 * (D - d))))
     phi_bl = math.exp(-2.6e-8 * (n * nu) ** 1.4 * d_m)
     mu_sl = phi_bl * 0.15 + (1.0 - phi_bl) * 0.002
     return 1e-3 * phi_ish * phi_rs * G_rr * (nu * n) ** 0.6, 1e-3 * G_sl * mu_sl

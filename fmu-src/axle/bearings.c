@@ -51,10 +51,14 @@ void hg_trb_pair_axial(double Fr_1, double Y_1, double Fr_2, double Y_2, double 
 /* SKF model constants of tapered roller bearings (bearings.h) */
 #define SKF_R2 10.9
 #define SKF_S2 2.0
-#define SKF_K_RS 3e-8 /* replenishment: oil bath (low level) or oil jet */
 #define SKF_K_Z 6.0   /* bearing type geometry constant, tapered roller bearings */
 #define MU_BL 0.15    /* sliding friction in boundary lubrication */
 #define MU_EHL 0.002  /* sliding friction in full film, tapered roller bearings */
+
+double hg_trb_phi_rs(double K_rs, double vn, double rs)
+{
+    return exp(-K_rs * vn * rs); /* K_rs = 0, a flooded bearing: 1 */
+}
 
 void hg_trb_geometry_of(const hg_trb *b, hg_trb_geometry *g)
 {
@@ -84,7 +88,7 @@ hg_trb_moment hg_trb_friction_at(const hg_trb *b, const hg_trb_geometry *g,
     double G_rr = g->G_rr0 * pow(F_r + SKF_R2 * b->Y * F_a, 0.31);
     double G_sl = g->G_sl0 * (F_r + SKF_S2 * b->Y * F_a);
     double phi_ish = 1.0 / (1.0 + 1.84e-9 * g->dm128 * s->n128v064);
-    double phi_rs = exp(-SKF_K_RS * s->vn * g->rs);
+    double phi_rs = hg_trb_phi_rs(b->K_rs, s->vn, g->rs);
     double phi_bl = exp(-2.6e-8 * s->vn14 * g->dm);
     double mu_sl = phi_bl * MU_BL + (1.0 - phi_bl) * MU_EHL;
     m.M_rr = 1e-3 * phi_ish * phi_rs * G_rr * s->vn06; /* N mm -> N m */

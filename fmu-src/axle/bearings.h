@@ -17,7 +17,8 @@
  *     phi_rs = exp(-K_rs nu n (d + D) sqrt(K_z / (2 (D - d))))          kinematic replenishment
  *     mu_sl = phi_bl mu_bl + (1 - phi_bl) mu_EHL,  phi_bl = exp(-2.6e-8 (n nu)^1.4 d_m)
  *   with R_2 = 10.9, S_2 = 2 (every tapered series of the catalogue's Table 2b), K_rs = 3e-8
- *   (oil bath, low level, or oil jet), K_z = 6 (tapered roller bearings), mu_bl = 0.15,
+ *   (oil bath, low level, or oil jet) or 0 (a flooded bearing: no kinematic starvation, the
+ *   axle's default, docs/axle.md), K_z = 6 (tapered roller bearings), mu_bl = 0.15,
  *   mu_EHL = 0.002 (tapered roller bearings); M [N mm], d, D, d_m [mm], F [N], n [r/min],
  *   nu [mm^2/s]. No seal moment (open bearings) and no drag moment (the bearings are fed by the
  *   oil the ring gear throws; the bath stays below them, docs/axle.md). The functions below
@@ -68,7 +69,21 @@ typedef struct {
     double Y;      /* axial load factor of the bearing (catalogue) */
     double R_1;    /* SKF geometry constant of the rolling moment of the series [N mm units] */
     double S_1;    /* ... of the sliding moment */
+    double K_rs;   /* SKF replenishment/starvation constant [s min / mm^2.5]: 0 for a flooded
+                      bearing (no kinematic starvation), HG_TRB_K_RS_LOW_LEVEL otherwise */
 } hg_trb;
+
+/* SKF's K_rs for a low-level oil bath or an oil jet (3e-8; grease and oil-air 6e-8) */
+#define HG_TRB_K_RS_LOW_LEVEL 3e-8
+
+/* Kinematic replenishment/starvation reduction factor (SKF catalogue, "The SKF model for
+ * calculating the frictional moment", rolling moment):
+ *   phi_rs = exp(-K_rs nu n (d + D) sqrt(K_z / (2 (D - d))))
+ * from K_rs, vn = nu n [mm^2/s r/min] and rs = (d + D) sqrt(K_z / (2 (D - d))) [mm^0.5].
+ * The catalogue gives K_rs for the feeds that starve the raceways (a low-level oil bath, whose
+ * level is below the centre of the lowest roller, an oil jet, oil-air, grease); a flooded
+ * bearing takes K_rs = 0, phi_rs = 1 (docs/axle.md, "Replenishment"). */
+double hg_trb_phi_rs(double K_rs, double vn, double rs);
 
 /* The bearing's frictional moment by part [N m], magnitudes. */
 typedef struct {

@@ -128,7 +128,8 @@ static int bearings(hg_ledger *a, const hg_vars *v, char *err, size_t errlen)
         int pinion = k <= HG_BRG_P_TAIL;
         if (bearing_size(NAME[k], d[k], D[k], err, errlen)) return -1;
         a->brg[k] = (hg_trb){d[k], D[k], Y[k], pinion ? v->brg_p_R1 : v->brg_g_R1,
-                             pinion ? v->brg_p_S1 : v->brg_g_S1};
+                             pinion ? v->brg_p_S1 : v->brg_g_S1,
+                             v->brg_feed == HG_BRG_FEED_LOW_LEVEL ? HG_TRB_K_RS_LOW_LEVEL : 0.0};
     }
     if (preload_rating("F_pre_p", v->F_pre_p, "brg_p_C0", v->brg_p_C0, fmax(Y[0], Y[1]), err,
                        errlen) ||

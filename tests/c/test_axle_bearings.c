@@ -74,6 +74,35 @@ static void check_reactions(void)
     CHECK_CLOSE(a2, 3200.0, 1e-12, 0);
 }
 
+/* the replenishment factor: flooded (K_rs = 0) against the low-level feed, warm and cold */
+static void check_replenishment(const hg_trb *low, double w)
+{
+    /* the 32308 of check_friction, flooded: phi_rs = 1, so 13 mm^2/s, 2000 r/min gives
+     * M_rr = 0.967691 1.321449 26000^0.6 = 569.864 N mm (2.5 % above the low-level feed);
+     * cold oil, 2000 mm^2/s: phi_ish = 1/(1 + 1.84e-9 130000^1.28 2000^0.64) = 0.544024,
+     * flooded M_rr = 0.544024 1.321449 (4e6)^0.6 = 6575.13 N mm; the low-level feed's
+     * phi_rs = exp(-3e-8 4e6 130 sqrt(0.06)) = 0.0219014 leaves 144.005 N mm; sliding at
+     * mu_EHL: 0.002 5802.323 = 11.6046 N mm either way */
+    hg_trb b = *low;
+    hg_trb_moment m, s;
+    b.K_rs = 0.0;
+    CHECK_CLOSE(hg_trb_phi_rs(0.0, 4e6, 31.843), 1.0, 0, 0);
+    CHECK_CLOSE(hg_trb_phi_rs(HG_TRB_K_RS_LOW_LEVEL, 4e6, 130.0 * sqrt(0.06)), 0.0219014, 2e-6,
+                0);
+    m = hg_trb_friction(&b, 3000.0, 2000.0, 13e-6, w);
+    CHECK_CLOSE(m.M_rr, 0.56986358, 1e-7, 0);
+    CHECK_CLOSE(m.M_sl, 0.07775140, 1e-7, 0);
+    m = hg_trb_friction(&b, 3000.0, 2000.0, 2000e-6, w);
+    s = hg_trb_friction(low, 3000.0, 2000.0, 2000e-6, w);
+    CHECK_CLOSE(m.M_rr, 6.5751256, 1e-7, 0);
+    CHECK_CLOSE(s.M_rr, 0.14400456, 1e-6, 0);
+    CHECK_CLOSE(m.M_sl, 0.01160465, 1e-6, 0);
+    CHECK_CLOSE(s.M_sl, m.M_sl, 1e-12, 0);
+    /* by hand, 30 r/min in 300 mm^2/s: 311.240 against 308.576 N mm (0.9 %) */
+    m = hg_trb_friction(&b, 3000.0, 2000.0, 300e-6, 30.0 * 3.14159265358979323846 / 30.0);
+    CHECK_CLOSE(m.M_rr, 0.31124027, 1e-7, 0);
+}
+
 static void check_friction(void)
 {
     /* a 32308 (d 40, D 90 mm, d_m 65 mm, Y 1.74, series 323: R_1 2.38e-6, S_1 0.019), F_r 3 kN,
@@ -83,8 +112,8 @@ static void check_friction(void)
      * nu 13 mm^2/s, n 2000 r/min: phi_ish = 1/(1 + 1.84e-9 (130000)^1.28 13^0.64) = 0.967691,
      * phi_rs = exp(-3e-8 13 2000 130 sqrt(6/100)) = 0.975468, phi_bl = exp(-2.6e-8 26000^1.4
      * 65) = 0.077027, mu_sl = 0.013400: M_rr = 0.967691 0.975468 1.321449 26000^0.6 = 555.884,
-     * M_sl = 77.7514 N mm. */
-    hg_trb b = {0.040, 0.090, 1.74, 2.38e-6, 0.019};
+     * M_sl = 77.7514 N mm (fed as by a low-level bath or a jet, K_rs = 3e-8). */
+    hg_trb b = {0.040, 0.090, 1.74, 2.38e-6, 0.019, HG_TRB_K_RS_LOW_LEVEL};
     double w = 2000.0 * 3.14159265358979323846 / 30.0;
     hg_trb_moment m = hg_trb_friction(&b, 3000.0, 2000.0, 13e-6, w);
     CHECK_CLOSE(m.M_rr, 0.55588374, 1e-7, 0);
@@ -103,6 +132,7 @@ static void check_friction(void)
     /* unloaded: no moment */
     m = hg_trb_friction(&b, 0.0, 0.0, 13e-6, w);
     CHECK_CLOSE(m.M_rr + m.M_sl, 0.0, 0, 1e-15);
+    check_replenishment(&b, w);
 }
 
 static void check_preload(void)

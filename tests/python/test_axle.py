@@ -304,3 +304,37 @@ def test_bad_values_are_refused_with_their_name(harness, name, value):
     assert name in text and (f"{value:g}" in text or "finite" in text)
     if math.isfinite(value):
         assert "outside its range" in text
+
+
+def bearing_loss(x, rpm, torque, T_C, **values):
+    """P_bearings [W] of the rigid mesh held at rpm by the governor with the input torque, the
+    oil at T_C (fixed): the ledger's loads follow the mesh force."""
+    x.start(dict(axle_losses=FULL, mesh_model=3, friction_model=2, mu_const=0.0, T_s=torque,
+                 w_set=rpm * RPM, w_p0=rpm * RPM, T_bath=T_C + 273.15, **values), checked=False)
+    return x.record(0.3, 0.05, ["P_bearings"])[-1][0]
+
+
+# (rpm, N m, the warmest oil [degC]) where the rollers run on a full film: in warmer oil at that
+# speed the roller ends slide in mixed lubrication, whose friction falls as the oil thickens
+# (SKF's phi_bl), and the cast iron carrier's preload grows with temperature (docs/axle.md)
+COOLING_POINTS = [(500, 0, 40), (500, 300, 40), (1000, 100, 60), (1000, 300, 60),
+                  (2000, 0, 100), (2000, 100, 60), (2000, 300, 60), (4000, 0, 100),
+                  (4000, 300, 100)]
+COOLING_C = (100, 80, 60, 40, 20, 0, -7, -15, -20, -30)
+
+
+def test_bearing_loss_does_not_fall_as_the_oil_cools(harness):
+    """Measured tapered roller bearings in flooded oil (Zhou & Hoeprich's (n mu)^0.62) and
+    measured axles (TRL RR10, SAE J2985's 28 against 65 degC) lose more in cold, viscous oil:
+    P_bearings never falls from the warmest full-film temperature down to -30 degC, rises
+    several-fold from 20 to -30 degC at 2000 rpm, and stays bounded by the inlet's shear
+    heating (below what the SKF rolling moment would be without it)."""
+    x = harness()
+    for rpm, torque, warmest in COOLING_POINTS:
+        P = [bearing_loss(x, rpm, torque, T) for T in COOLING_C if T <= warmest]
+        assert all(b >= a * (1 - 1e-9) for a, b in zip(P, P[1:])), (rpm, torque, P)
+    P20, P_30 = bearing_loss(x, 2000, 0, 20), bearing_loss(x, 2000, 0, -30)
+    assert 2.0 < P_30 / P20 < 10.0
+    # the low-level feed's kinematic starvation takes the rolling moment away (the SKF factor
+    # phi_rs with K_rs = 3e-8): in -30 degC oil less than a tenth of the flooded loss
+    assert bearing_loss(x, 2000, 0, -30, brg_feed=2) < 0.1 * P_30

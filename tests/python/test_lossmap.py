@@ -62,8 +62,9 @@ def test_report_section_prints_a_map_whose_numbers_obey_the_identity(lm):
         T, n, tq, mesh, churn, bear, seals, p_axle, eta = (
             float(c) for c in line.strip("| ").split(" | "))
         assert abs(mesh + churn + bear + seals - p_axle) <= 0.2 + 1e-9, line  # 0.05 W rounding
-        if tq > 0:
-            assert 90.0 < eta < 100.0, line
+        if tq > 0:  # TRL RR10: at least 6 % lost, up to 40 % at low power in viscous oil; the
+            # flooded bearings take 12 % at 40 degC, 4000 rpm, 50 N.m
+            assert 80.0 < eta < 100.0, line
 
 
 def test_report_write_includes_the_section(tmp_path, lm, monkeypatch):
