@@ -27,6 +27,13 @@ void hg_ft_key_for(double w_p, double ratio, double T_bath, double W_t, hg_ft_ke
     key->w_dir = 0.0;
 }
 
+double hg_ft_load_range_on_lattice(double W_max)
+{
+    double W = W_FLOOR; /* powers of 4 by multiplication: exact, the same on every platform */
+    while (W < W_max && W < 1e300) W *= 4.0;
+    return W;
+}
+
 void hg_ft_node_keys(const hg_ft_key *key, double ratio, hg_ft_key *lo, hg_ft_key *hi)
 {
     double x = log(fabs(key->w_p) > HG_FT_SPEED_MIN ? fabs(key->w_p) : HG_FT_SPEED_MIN);

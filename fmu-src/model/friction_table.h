@@ -91,6 +91,14 @@ int hg_ft_key_covers(const hg_ft_key *key, double w_p, double T_bath, double W_t
 void hg_ft_key_next(hg_ft_key *key, int valid, double w_p, double ratio, double T_bath,
                     double W_t);
 
+/* The load range a host's integrator (Model Exchange) keys its tables on: the smallest
+ * 1000 N x 4^k at or above W_max. The tables' loads are spaced evenly in ln W over three decades
+ * below W_max whatever it is, so the range serves as well; a launch or a tip-out then meets a few
+ * ranges again and again instead of a new one at every 40 % of load, and their node tables are
+ * found in the store (each new range solves its own), with fewer step events. The model's own
+ * integrator (co-simulation) keeps the range at twice the load. */
+double hg_ft_load_range_on_lattice(double W_max);
+
 /* Beyond this friction coefficient (parameters far outside physics, e.g. a vanishing k_f) the
  * table is not used: the direct solve runs, and fails as it would without the table. */
 #define HG_FT_MU_MAX 10.0

@@ -21,11 +21,12 @@ int hg_ftp_setup(hg_ft_set **tables, hg_setup *s, const hg_vars *v, char *err, s
 void hg_ftp_free(hg_ft_set **tables);
 
 /* At a step's start with inputs u, before the step begins: moves rt's key onto the operating
- * point when it no longer covers it. 1 when the tables must be built again, else 0 (also without
+ * point when it no longer covers it (its load range on hg_ft_load_range_on_lattice's lattice
+ * when load_lattice: a host's integrator). 1 when the tables must be built again, else 0 (also without
  * tables and near standstill). A new key changes the right-hand side within the tables' error:
  * like a jump of the inputs it restarts the integrator, whose history saw the old one. */
 int hg_ftp_stale(const hg_ft_set *tables, hg_runtime *rt, const hg_dyn_params *p,
-                 const hg_inputs *u);
+                 const hg_inputs *u, int load_lattice);
 
 /* Then, once the old right-hand side is no longer needed: builds the tables for rt's key when
  * `rebuild`, and points s->p.tables at the tables this step uses (NULL, the direct solve: none

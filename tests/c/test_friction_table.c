@@ -187,6 +187,38 @@ static void test_key_next(void)
     CHECK(key.w_p == w && key.T_bath == 313.15 && key.W_max == 18000.0);
 }
 
+/* hg_ft_load_range_on_lattice: the smallest 1000 N x 4^k at or above the range; a key moved
+ * onto it as the Model Exchange policy does still covers the load that moved it, for loads from
+ * 1 N to 1 MN; a load swinging up and back down through a launch and a tip-out meets three ranges
+ * there, where the ranges at twice the load are new at every move (ten here). */
+static void test_load_lattice(void)
+{
+    double W, seen[64], seen_lat[64], swing[] = {600.0, 1500.0, 2600.0, 4500.0, 7600.0, 100.0,
+                                                 1400.0, 2100.0, 3100.0, 6200.0};
+    int n = 0, n_lat = 0, k, j;
+    CHECK(hg_ft_load_range_on_lattice(0.0) == 1000.0);
+    CHECK(hg_ft_load_range_on_lattice(1000.0) == 1000.0);
+    CHECK(hg_ft_load_range_on_lattice(1000.5) == 4000.0);
+    CHECK(hg_ft_load_range_on_lattice(12390.0) == 16000.0);
+    for (W = 1.0; W < 1e6; W *= 1.07) {
+        hg_ft_key key;
+        hg_ft_key_for(100.0, 36.0 / 13.0, 313.15, W, &key);
+        key.W_max = hg_ft_load_range_on_lattice(key.W_max);
+        CHECK(hg_ft_key_covers(&key, 100.0, 313.15, W));
+    }
+    for (k = 0; k < (int)(sizeof swing / sizeof swing[0]); k++) {
+        hg_ft_key key;
+        double lat;
+        hg_ft_key_for(100.0, 36.0 / 13.0, 313.15, swing[k], &key);
+        lat = hg_ft_load_range_on_lattice(key.W_max);
+        for (j = 0; j < n && seen[j] != key.W_max; j++) continue;
+        if (j == n) seen[n++] = key.W_max;
+        for (j = 0; j < n_lat && seen_lat[j] != lat; j++) continue;
+        if (j == n_lat) seen_lat[n_lat++] = lat;
+    }
+    CHECK(n == 10 && n_lat == 3);
+}
+
 /* Beyond twice its window the table holds its drift terms: built at 0.3 rpm (the 10 rpm torque
  * reversal's standstill), where ln mu rises by ~23 per rad/s, an unheld extrapolation to
  * 0.8 rad/s (the speed that step reached) gave mu ~ 3e5, a friction so stiff that arkode_erk's
@@ -283,6 +315,7 @@ int main(void)
     char err[HG_ERRLEN] = "";
     int k, thermal, rigid;
     test_key_next();
+    test_load_lattice();
     CHECK(hg_gearset_load("resources/gearsets/gearset1.txt", &g, err, sizeof err) == 0);
     for (k = 0; k < 2; k++)
         for (thermal = 0; thermal < 2; thermal++) {

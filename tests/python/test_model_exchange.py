@@ -167,6 +167,32 @@ def test_gear_and_vehicle_as_one_ode_against_co_simulation(fmu_path):
         assert richardson < 0.25 * err_fine, n
 
 
+def test_friction_tables_keyed_on_the_load_lattice(fmu_path):
+    """In Model Exchange the friction tables' load range is one of 1000 N x 4^k
+    (hg_ft_load_range_on_lattice): the launch of tests/cosim's scene, whose pair load grows from
+    nothing to 5.5 kN, keys its tables on three ranges (at twice the load, as co-simulation keys
+    them, it took five: 1.0 / 2.6 / 4.5 / 7.6 / 11.0 kN), each solving its own node tables."""
+    import re
+    import sys
+
+    from conftest import ROOT
+    from hypoid.cosim.exchange import GearVehicleExchange
+
+    sys.path.insert(0, str(ROOT / "tests" / "cosim"))
+    import cosim_driver as cd
+
+    scene = cd.Scene(stop_time=0.3)
+    with GearVehicleExchange(fmu_path, cd.VEHICLE_FMU, scene.gear_start(),
+                             scene.vehicle_start(), scene.torque) as m:
+        m.gear.slave.setDebugLogging(True, [])
+        m.run(scene.stop_time, 0.01, ["w_p"], ["v"])
+        text = [msg for _, _, msg in m.gear.messages]
+    ranges = {float(r) for t in text for r in re.findall(r"pair loads up to (\d+) N", t)}
+    assert ranges, "no friction table was keyed"
+    assert all(math.log(r / 1000.0, 4.0) == round(math.log(r / 1000.0, 4.0)) for r in ranges)
+    assert len(ranges) <= 3 and max(ranges) >= 16000.0, sorted(ranges)
+
+
 def test_vehicle_model_exchange_entry_points_refuse_bad_input():
     """The vehicle FMU's Model Exchange: each entry point in a wrong state, with NULL or
     wrong-sized arrays, a state that is not finite, on a co-simulation instance; road load
