@@ -7,7 +7,7 @@
  * w_w, the vehicle's T_hs to the gear's T_w, the propeller-shaft torque T_s a function of time.
  *
  *   bench_me GEAR_DIR VEHICLE_DIR [--level full|map|NAME=VALUE,...] [--runs N] [--stop T]
- *            [--rtol R]
+ *            [--rtol R] [--stop-at-outputs 0|1]
  *
  * The scene is tests/cosim's (cosim_driver.Scene): from 100 rpm, T_s ramps to 150 N m in 0.3 s
  * (the launch), holds to 1.2 s, a tip-out to -50 N m (coast) by 1.3 s, held to 1.8 s, a tip-in
@@ -15,7 +15,9 @@
  * half-shaft coupling. Prints per run the wall and CPU time, the real-time factor (simulated /
  * CPU seconds), the integrator's steps, right-hand sides (the host's: including those of its
  * difference-quotient Jacobians), events, and w_p, E_in and the energy residual at the end.
- * Levels: full (the FMU's defaults) or map (mesh_model = rigid, friction_model = map). */
+ * Levels: full (the FMU's defaults) or map (mesh_model = rigid, friction_model = map). The
+ * integrator stops at the profile's breakpoints (kinks of T_s) and steps past the other outputs,
+ * which it interpolates (fmpy's CVode and most hosts stop at none). */
 #define _POSIX_C_SOURCE 199309L
 #include <math.h>
 #include <stdio.h>
@@ -28,8 +30,12 @@
 
 #define RPM 0.10471975511965977
 #define RATIO (36.0 / 13.0) /* gear set 1 */
-#define OUTPUT_INTERVAL 0.01 /* [s] the host's stops (every breakpoint of the profile is one) */
+#define OUTPUT_INTERVAL 0.01 /* [s] the host's outputs (every breakpoint of the profile is one) */
 #define MAX_X (2 * HOST_MAX_STATES)
+
+/* --stop-at-outputs 1: the integrator stops at every output (a stop time there) instead of
+ * stepping past and interpolating, as fmpy's CVode and most hosts do */
+static int stop_at_outputs;
 
 typedef struct {
     instance gear, vehicle;
@@ -42,14 +48,24 @@ typedef struct {
     int failed;
 } me_system;
 
-/* The scene's propeller-shaft torque [N m] at t (linear between the breakpoints). */
+/* The scene's propeller-shaft torque profile: time [s], T_s [N m] (linear in between). */
+static const double pts[][2] = {{0.0, 0.0},   {0.3, 150.0}, {1.2, 150.0}, {1.3, -50.0},
+                                {1.8, -50.0}, {1.9, 150.0}, {1e9, 150.0}};
+
 static double torque(double t)
 {
-    static const double pts[][2] = {{0.0, 0.0},    {0.3, 150.0}, {1.2, 150.0}, {1.3, -50.0},
-                                    {1.8, -50.0}, {1.9, 150.0}, {1e9, 150.0}};
     int k = 0;
     while (t > pts[k + 1][0]) k++;
     return pts[k][1] + (pts[k + 1][1] - pts[k][1]) * (t - pts[k][0]) / (pts[k + 1][0] - pts[k][0]);
+}
+
+/* Whether t is a breakpoint of the profile (a kink of the input: the integrator stops there). */
+static int breakpoint(double t)
+{
+    int k;
+    for (k = 0; pts[k][0] < 1e9; k++)
+        if (fabs(t - pts[k][0]) < 1e-9) return 1;
+    return 0;
 }
 
 /* Time, states and the connections at t: the state vector is the gear's, then the vehicle's. */
@@ -183,9 +199,11 @@ static int integrate(me_system *s, hg_solver *solver, double t_end, long *events
         return host_fail("the start of the integration");
     for (k = 1; k <= n_out; k++) {
         double t_out = k * OUTPUT_INTERVAL;
+        int pass = !stop_at_outputs && !breakpoint(t_out);
         while (t < t_out) {
             fmi2Boolean ev_g = fmi2False, ev_v = fmi2False, stop;
-            hg_advance_result r = hg_solver_advance(solver, t_out, 0, &t, x, dir, err, sizeof err);
+            hg_advance_result r =
+                hg_solver_advance(solver, t_out, pass, &t, x, dir, err, sizeof err);
             if (r == HG_ADVANCE_FAILED || s->failed || load(s, t, x)) {
                 fprintf(stderr, "bench_me: t = %g: %s\n", t, err);
                 return -1;
@@ -276,7 +294,7 @@ int main(int argc, char **argv)
     int runs = 3, k, rc = 0;
     if (argc < 3) {
         fprintf(stderr, "usage: bench_me GEAR_DIR VEHICLE_DIR [--level full|map|NAME=VALUE,...] "
-                "[--runs N] [--stop T] [--rtol R]\n");
+                "[--runs N] [--stop T] [--rtol R] [--stop-at-outputs 0|1]\n");
         return 2;
     }
     for (k = 3; k + 1 < argc; k += 2) {
@@ -290,6 +308,8 @@ int main(int argc, char **argv)
             t_end = atof(argv[k + 1]);
         else if (!strcmp(argv[k], "--rtol"))
             rtol = atof(argv[k + 1]);
+        else if (!strcmp(argv[k], "--stop-at-outputs"))
+            stop_at_outputs = atoi(argv[k + 1]);
         else
             return host_fail(argv[k]) ? 2 : 2;
     }

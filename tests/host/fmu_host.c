@@ -294,7 +294,8 @@ int host_open_as(instance *in, const fmu_lib *f, const fmu_info *m, const char *
     in->cb.freeMemory = free;
     in->cb.componentEnvironment = &in->log;
     in->c = f->instantiate(name, model_exchange ? fmi2ModelExchange : fmi2CoSimulation, m->guid,
-                           m->resource_uri, &in->cb, fmi2False, fmi2False);
+                           m->resource_uri, &in->cb, fmi2False,
+                           getenv("RUN_FMU_VERBOSE") ? fmi2True : fmi2False);
     return in->c ? 0 : host_fail("fmi2Instantiate");
 }
 
