@@ -16,4 +16,11 @@ typedef struct {
 void hg_friction_pair(const hg_friction_config *cfg, const hg_pair_contact *c, double *T_c_warm,
                       hg_pair_friction *out);
 
+/* For a caller that evaluates one load and geometry at several speeds or temperatures: the
+ * Hertz ellipse of c once (hg_friction_hertz; zeroed for models without one), then
+ * hg_friction_pair_hertz at each, with hg_friction_pair's result to the last bit. */
+void hg_friction_hertz(const hg_friction_config *cfg, const hg_pair_contact *c, hg_hertz *h);
+void hg_friction_pair_hertz(const hg_friction_config *cfg, const hg_pair_contact *c,
+                            const hg_hertz *h, double *T_c_warm, hg_pair_friction *out);
+
 #endif

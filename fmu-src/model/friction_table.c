@@ -101,19 +101,43 @@ void hg_ft_key_next(hg_ft_key *key, int valid, double w_p, double ratio, double 
     if (!load_covers(key->W_max, W_t)) key->W_max = fresh.W_max;
 }
 
+/* One point of the path under one load, evaluated at several speeds and temperatures: its
+ * Hertz ellipse depends on neither, so it is solved once (hg_friction_hertz). */
+typedef struct {
+    const hg_pair_point *pt;
+    double W;
+    hg_hertz hertz;
+} table_point;
+
+static void contact_at(const table_point *q, double w_p, double w_g, double T_bath,
+                       hg_pair_contact *c)
+{
+    c->W = q->W;
+    hg_gearset_entrainment(q->pt->up, q->pt->ug, q->pt->vc, w_p, w_g, c->u_p, c->u_g);
+    c->R_x = q->pt->R_x;
+    c->R_y = q->pt->R_y;
+    c->T_bath = T_bath;
+}
+
+static void point_at(const hg_friction_config *cfg, const hg_pair_point *pt, double W,
+                     const hg_ft_key *k, table_point *q)
+{
+    hg_pair_contact c;
+    q->pt = pt;
+    q->W = W;
+    contact_at(q, k->w_p, k->w_g, k->T_bath, &c);
+    hg_friction_hertz(cfg, &c, &q->hertz);
+}
+
 /* ln mu of the friction model at one point of the path (mu floored for pairs out of contact). */
-static double ln_mu(const hg_friction_config *cfg, const hg_pair_point *pt, double W, double w_p,
-                    double w_g, double T_bath, double *T_c_warm)
+static double ln_mu(const hg_friction_config *cfg, const table_point *q, double w_p, double w_g,
+                    double T_bath, double *T_c_warm)
 {
     hg_pair_contact c;
     hg_pair_friction f;
-    c.W = W;
-    hg_gearset_entrainment(pt->up, pt->ug, pt->vc, w_p, w_g, c.u_p, c.u_g);
-    c.R_x = pt->R_x;
-    c.R_y = pt->R_y;
-    c.T_bath = T_bath;
-    hg_friction_pair(cfg, &c, T_c_warm, &f);
-    return log(fmax(f.F_f / W, MU_FLOOR));
+    contact_at(q, w_p, w_g, T_bath, &c);
+    hg_friction_pair_hertz(cfg, &c, &q->hertz, T_c_warm, &f);
+    return log(fmax(f.F_f / q->W, MU_FLOOR));
 }
 
 /* The ghost nodes around the table (friction_table.h). */
@@ -137,20 +161,20 @@ static void fill_ghosts(hg_friction_table *t)
  * follows the pinion's (gear_follows: w_g = w_p w_g / w_p), one derivative along that line in
  * the w_p channel and none in w_g; per K of T. */
 static void drift_slopes(double *e, const hg_ft_key *k, const hg_friction_config *cfg,
-                         const hg_pair_point *pt, double W, int gear_follows, double *warm)
+                         const table_point *q, int gear_follows, double *warm)
 {
     double L0 = e[HG_FT_CH_L], T = k->T_bath;
     double dw_p = FD_SPEED * fmax(fabs(k->w_p), HG_FT_SPEED_MIN);
     double dw_g = FD_SPEED * fmax(fabs(k->w_g), HG_FT_SPEED_MIN);
     double along = k->w_p != 0.0 ? dw_p * k->w_g / k->w_p : 0.0;
     if (gear_follows) {
-        e[HG_FT_CH_WP] = (ln_mu(cfg, pt, W, k->w_p + dw_p, k->w_g + along, T, warm) - L0) / dw_p;
+        e[HG_FT_CH_WP] = (ln_mu(cfg, q, k->w_p + dw_p, k->w_g + along, T, warm) - L0) / dw_p;
         e[HG_FT_CH_WG] = 0.0;
     } else {
-        e[HG_FT_CH_WP] = (ln_mu(cfg, pt, W, k->w_p + dw_p, k->w_g, T, warm) - L0) / dw_p;
-        e[HG_FT_CH_WG] = (ln_mu(cfg, pt, W, k->w_p, k->w_g + dw_g, T, warm) - L0) / dw_g;
+        e[HG_FT_CH_WP] = (ln_mu(cfg, q, k->w_p + dw_p, k->w_g, T, warm) - L0) / dw_p;
+        e[HG_FT_CH_WG] = (ln_mu(cfg, q, k->w_p, k->w_g + dw_g, T, warm) - L0) / dw_g;
     }
-    e[HG_FT_CH_T] = (ln_mu(cfg, pt, W, k->w_p, k->w_g, T + FD_T, warm) - L0) / FD_T;
+    e[HG_FT_CH_T] = (ln_mu(cfg, q, k->w_p, k->w_g, T + FD_T, warm) - L0) / FD_T;
 }
 
 void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg,
@@ -165,11 +189,13 @@ void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg
         double W = key->W_max * exp(LN_W_SPAN * (1.0 - (double)j / (HG_FT_N_L - 1))), warm = NAN;
         for (i = 0; i < HG_FT_N_PSI; i++) { /* along the path: each solve warm-starts the next */
             hg_pair_point pt;
+            table_point q;
             double w0, *e = t->c[i + 1][j + 1];
             hg_gearset_pair_point(g, flank, level, HG_TWO_PI * i / HG_FT_N_PSI, &pt);
-            e[HG_FT_CH_L] = ln_mu(cfg, &pt, W, key->w_p, key->w_g, key->T_bath, &warm);
+            point_at(cfg, &pt, W, key, &q);
+            e[HG_FT_CH_L] = ln_mu(cfg, &q, key->w_p, key->w_g, key->T_bath, &warm);
             w0 = warm;
-            drift_slopes(e, key, cfg, &pt, W, gear_follows, &warm);
+            drift_slopes(e, key, cfg, &q, gear_follows, &warm);
             warm = w0;
             if (!(e[HG_FT_CH_L] <= log(HG_FT_MU_MAX))) t->usable = 0;
         }

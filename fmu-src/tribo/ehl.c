@@ -116,6 +116,7 @@ typedef struct {
     const hg_ehl_params *p;
     const hg_lubricant *lub;
     const hg_pair_contact *c;
+    const hg_hertz *hertz; /* the caller's ellipse for c (hg_ehl_hertz), or NULL: solved here */
     hg_pair_friction *out;
     hg_ehl_stats st;    /* every intermediate value (copied to the caller's stats on request) */
     hg_kinematics kin;
@@ -123,13 +124,21 @@ typedef struct {
     double h_c, A_visc, F_b, k_f;
 } ehl_eval;
 
+static double e_star(const hg_ehl_params *p)
+{
+    return p->E_star > 0.0 ? p->E_star : p->E / (1.0 - p->nu * p->nu);
+}
+
 /* Hertz (docs/physics.md §2) */
 static void stage_hertz(ehl_eval *e)
 {
     const hg_ehl_params *p = e->p;
-    e->st.E_star = p->E_star > 0.0 ? p->E_star : p->E / (1.0 - p->nu * p->nu);
-    hg_hertz_eval(e->c->W, e->c->R_x, e->c->R_y, e->st.E_star, (hg_hertz_mode)p->hertz,
-                  &e->st.hertz);
+    e->st.E_star = e_star(p);
+    if (e->hertz)
+        e->st.hertz = *e->hertz;
+    else
+        hg_hertz_eval(e->c->W, e->c->R_x, e->c->R_y, e->st.E_star, (hg_hertz_mode)p->hertz,
+                      &e->st.hertz);
     e->out->p_h = e->st.hertz.p_max;
 }
 
@@ -296,13 +305,20 @@ static void stage_diagnostics(ehl_eval *e)
     st->Z_c = e->sc.Z;
 }
 
-void hg_ehl_pair_ex(const hg_ehl_params *p, const hg_lubricant *lub, const hg_pair_contact *c,
-                    double *T_c_warm, hg_pair_friction *out, hg_ehl_stats *st)
+/* Whether c is a contact the stages evaluate (else forces stay 0). */
+static int in_contact(const hg_pair_contact *c)
+{
+    return finite_contact(c) && c->W >= HG_EHL_LOAD_MIN && c->R_x > 0.0 && c->R_y > 0.0;
+}
+
+static void pair_eval(const hg_ehl_params *p, const hg_lubricant *lub, const hg_pair_contact *c,
+                      const hg_hertz *hertz, double *T_c_warm, hg_pair_friction *out,
+                      hg_ehl_stats *st)
 {
     ehl_eval e;
     memset(&e, 0, sizeof e);
     memset(out, 0, sizeof *out);
-    e.p = p, e.lub = lub, e.c = c, e.out = out;
+    e.p = p, e.lub = lub, e.c = c, e.hertz = hertz, e.out = out;
     e.st.dT_first = NAN;
     e.st.T_in = c->T_bath + p->T_inlet_rise;
     out->T_c = e.st.T_in;
@@ -311,7 +327,7 @@ void hg_ehl_pair_ex(const hg_ehl_params *p, const hg_lubricant *lub, const hg_pa
         out->u_e = e.kin.u_e;
         out->V_s = e.kin.v_s;
     }
-    if (!finite_contact(c) || !(c->W >= HG_EHL_LOAD_MIN) || !(c->R_x > 0.0) || !(c->R_y > 0.0)) {
+    if (!in_contact(c)) {
         e.st.flags = HG_EHL_NO_CONTACT; /* nothing to compute; forces stay 0 */
     } else {
         hg_entrainment_radii(c->R_x, c->R_y, e.kin.cos2_e, e.kin.sin2_e, &out->R_e, &out->R_s);
@@ -327,4 +343,23 @@ void hg_ehl_pair_ex(const hg_ehl_params *p, const hg_lubricant *lub, const hg_pa
     }
     if (T_c_warm) *T_c_warm = out->T_c;
     if (st) *st = e.st;
+}
+
+void hg_ehl_pair_ex(const hg_ehl_params *p, const hg_lubricant *lub, const hg_pair_contact *c,
+                    double *T_c_warm, hg_pair_friction *out, hg_ehl_stats *st)
+{
+    pair_eval(p, lub, c, NULL, T_c_warm, out, st);
+}
+
+void hg_ehl_hertz(const hg_ehl_params *p, const hg_pair_contact *c, hg_hertz *h)
+{
+    memset(h, 0, sizeof *h);
+    if (in_contact(c)) hg_hertz_eval(c->W, c->R_x, c->R_y, e_star(p), (hg_hertz_mode)p->hertz, h);
+}
+
+void hg_ehl_pair_hertz(const hg_ehl_params *p, const hg_lubricant *lub,
+                       const hg_pair_contact *c, const hg_hertz *h, double *T_c_warm,
+                       hg_pair_friction *out)
+{
+    pair_eval(p, lub, c, h, T_c_warm, out, NULL);
 }

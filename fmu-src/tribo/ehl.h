@@ -104,4 +104,13 @@ void hg_ehl_pair(const hg_ehl_params *p, const hg_lubricant *lub, const hg_pair_
 void hg_ehl_pair_ex(const hg_ehl_params *p, const hg_lubricant *lub, const hg_pair_contact *c,
                     double *T_c_warm, hg_pair_friction *out, hg_ehl_stats *stats);
 
+/* The Hertz ellipse hg_ehl_pair solves for c (its load and radii, p's E* and Hertz mode; zeroed
+ * where hg_ehl_pair finds no contact), for a caller that evaluates one load and geometry at
+ * several speeds or temperatures: hg_ehl_pair_hertz then takes it instead of solving it again,
+ * with the same result to the last bit. */
+void hg_ehl_hertz(const hg_ehl_params *p, const hg_pair_contact *c, hg_hertz *h);
+void hg_ehl_pair_hertz(const hg_ehl_params *p, const hg_lubricant *lub,
+                       const hg_pair_contact *c, const hg_hertz *h, double *T_c_warm,
+                       hg_pair_friction *out);
+
 #endif

@@ -22,6 +22,39 @@ static hg_pair_contact contact(double W, double scale, double T_bath_C)
     return c;
 }
 
+/* hg_ehl_pair_hertz with the ellipse of hg_ehl_hertz gives hg_ehl_pair's result bit for bit
+ * (the friction tables solve the ellipse once per load and geometry), thermal and isothermal,
+ * from no load (no contact: a zeroed ellipse) to 20 kN, at several speeds and bath
+ * temperatures and warm starts; with another load's ellipse it differs (the ellipse is used). */
+static void test_pair_hertz_bitwise(hg_ehl_params p, const hg_lubricant *l)
+{
+    int th, i, k, same = 1;
+    for (th = 0; th < 2; th++)
+        for (i = 0; i < 12; i++) {
+            hg_pair_contact c = contact(i ? 20.0 * pow(2.0, i - 1) : 0.0, 1.0, 40.0);
+            hg_hertz h, other;
+            p.thermal = th;
+            hg_ehl_hertz(&p, &c, &h);
+            for (k = 0; k < 4; k++) {
+                hg_pair_friction a, b;
+                double warm_a = k == 3 ? 330.0 : NAN, warm_b = warm_a;
+                c = contact(c.W, 0.5 + 0.5 * k, 20.0 + 15.0 * k);
+                hg_ehl_pair(&p, l, &c, &warm_a, &a);
+                hg_ehl_pair_hertz(&p, l, &c, &h, &warm_b, &b);
+                same &= !memcmp(&a, &b, sizeof a) && !memcmp(&warm_a, &warm_b, sizeof warm_a);
+            }
+            if (i > 1) { /* an ellipse of twice the load changes the friction */
+                hg_pair_contact d = contact(2.0 * c.W, 1.0, 40.0);
+                hg_pair_friction a, b;
+                hg_ehl_hertz(&p, &d, &other);
+                hg_ehl_pair(&p, l, &c, NULL, &a);
+                hg_ehl_pair_hertz(&p, l, &c, &other, NULL, &b);
+                CHECK(a.F_f != b.F_f);
+            }
+        }
+    CHECK(same);
+}
+
 static int all_finite(const hg_pair_friction *o)
 {
     return isfinite(o->F_f) && isfinite(o->F_v) && isfinite(o->F_b) && isfinite(o->mu) &&
@@ -279,6 +312,7 @@ int main(void)
         CHECK(hg_shear_limit(1e12, 4e7, &sl) == 4e7 && sl == 0.0);
     }
 
+    test_pair_hertz_bitwise(p, &l62);
     /* --- thermal helpers and the T_c solver --- */
     CHECK_CLOSE(hg_coleman_length(5e-3, 2e-4, 3.0, 0.0), 2e-4, 1e-15, 0);
     CHECK_CLOSE(hg_coleman_length(5e-3, 2e-4, 0.0, 3.0), 5e-3, 1e-15, 0);
