@@ -28,15 +28,18 @@ class GearVehicleExchange:
         self.v_ths = self.vehicle.refs(["T_hs"])
         self.gear.start({**gear_start, "T_s": torque(0.0)})
         self.vehicle.start({**vehicle_start, "w_w": self.gear.get_reals(self.g_ww)[0]})
+        self.set_g_in, self.set_v_in = self.gear.real_setter(self.g_in), \
+            self.vehicle.real_setter(self.v_in)
+        self.get_v_ths = self.vehicle.real_getter(self.v_ths)
         self.exchange = Exchange([self.gear, self.vehicle], rtol=rtol, couple=self._couple)
         self._couple(0.0, [self.gear.states()])
 
     def _couple(self, t, states):
         """The connections at time t, with the states the integrator set: w_w (a state of the
         gear) to the vehicle, whose T_hs (its states and that input) goes to the gear."""
-        self.vehicle.set_reals(self.v_in, [float(states[0][self.k_ww])])
-        T_hs = self.vehicle.get_reals(self.v_ths)[0]
-        self.gear.set_reals(self.g_in, [self.torque(t), T_hs])
+        self.set_v_in([float(states[0][self.k_ww])])
+        T_hs = self.get_v_ths()[0]
+        self.set_g_in([self.torque(t), T_hs])
 
     def run(self, t_end, output_interval, gear_out, vehicle_out):
         return self.exchange.run(t_end, output_interval, [list(gear_out), list(vehicle_out)])

@@ -87,6 +87,32 @@ class ExchangeInstance(Instance):
         self._call(self.slave.getEventIndicators, _pointer(z), self.nz)
         return z
 
+    def real_setter(self, refs):
+        """set_reals for these value references as one prepared call, set(values): for a
+        master's connections at every right-hand side (the bare FMI call; a failure is made
+        again through set_reals, which raises FmuError)."""
+        n, fn, c = len(refs), self.slave._functions["fmi2SetReal"], self.slave.component
+        vr, buf = (ctypes.c_uint * n)(*refs), (ctypes.c_double * n)()
+
+        def put(values):
+            buf[:] = values
+            if fn(c, vr, n, buf) > 1:
+                self.set_reals(refs, values)
+
+        return put
+
+    def real_getter(self, refs):
+        """get_reals for these value references as one prepared call, get() -> list."""
+        n, fn, c = len(refs), self.slave._functions["fmi2GetReal"], self.slave.component
+        vr, buf = (ctypes.c_uint * n)(*refs), (ctypes.c_double * n)()
+
+        def get():
+            if fn(c, vr, n, buf) > 1:
+                return self.get_reals(refs)
+            return buf[:]
+
+        return get
+
     def completed_step(self):
         """fmi2CompletedIntegratorStep: True when the FMU asks for an event."""
         event, _ = self._call(self.slave.completedIntegratorStep)
@@ -106,6 +132,38 @@ class ExchangeInstance(Instance):
         output_interval as a structured array like Instance.series, and the number of events."""
         return Exchange([self], rtol=rtol, max_step=max_step).run(
             t_end, output_interval, names)
+
+
+class _Raw:
+    """An instance's FMI functions of the right-hand side as the bare ctypes calls (fmpy's
+    wrappers and Instance._call cost more than the FMU's own evaluation there); a status above
+    fmi2Warning is for the caller to raise through the checked call."""
+
+    def __init__(self, inst):
+        f = inst.slave._functions
+        self.inst, self.c, self.nx, self.nz = inst, inst.slave.component, inst.nx, inst.nz
+        self.set_time = f["fmi2SetTime"]
+        self.set_states = f["fmi2SetContinuousStates"]
+        self.derivatives = f["fmi2GetDerivatives"]
+        self.indicators = f["fmi2GetEventIndicators"]
+
+
+class _Places:
+    """For a vector of CVODE (a pointer and its length), a numpy view of it and a pointer to
+    each instance's part (cuts: the parts' bounds), kept per vector: CVODE passes the same few."""
+
+    def __init__(self, cuts):
+        self.cuts, self.known = [int(c) for c in cuts], {}
+
+    def __call__(self, p, k):
+        address = ctypes.addressof(p.contents)
+        got = self.known.get((address, k))
+        if got is None:
+            size = ctypes.sizeof(ctypes.c_double)
+            ptrs = [ctypes.cast(address + size * a, ctypes.POINTER(ctypes.c_double))
+                    for a in self.cuts[:-1]]
+            got = self.known[(address, k)] = (np.ctypeslib.as_array(p, (k,)), ptrs)
+        return got
 
 
 class Exchange:
@@ -133,6 +191,8 @@ class Exchange:
         from fmpy.sundials import CVodeSolver
 
         n, nz = int(self.cuts[-1]), int(self.zcuts[-1])
+        raw = [_Raw(inst) for inst in self.instances]
+        x_at, z_at = _Places(self.cuts), _Places(self.zcuts)
 
         def view(p, k):
             return np.ctypeslib.as_array(p, (k,))
@@ -141,13 +201,29 @@ class Exchange:
             view(p, k)[:] = np.concatenate([inst.states() for inst in self.instances])
 
         def set_x(p, k):
-            self._load(self._t, view(p, k).copy())
+            # _load's calls, straight into the FMUs from CVODE's vector (the right-hand side's
+            # hot loop); a failed call is made again the checked way, which raises FmuError
+            whole, ptrs = x_at(p, k)
+            x = whole.copy()
+            parts = [x[a:b] for a, b in zip(self.cuts[:-1], self.cuts[1:])]
+            for r, ptr, part in zip(raw, ptrs, parts):
+                if r.set_time(r.c, self._t) > 1:
+                    r.inst.set_time(self._t)
+                r.inst.t = self._t
+                if r.set_states(r.c, ptr, r.nx) > 1:
+                    r.inst.set_states(part)
+            if self.couple:
+                self.couple(self._t, parts)
 
         def get_dx(p, k):
-            view(p, k)[:] = np.concatenate([inst.derivatives() for inst in self.instances])
+            for r, ptr in zip(raw, x_at(p, k)[1]):
+                if r.derivatives(r.c, ptr, r.nx) > 1:
+                    r.inst.derivatives()
 
         def get_z(p, k):
-            view(p, k)[:] = np.concatenate([inst.indicators() for inst in self.instances])
+            for r, ptr in zip(raw, z_at(p, k)[1]):
+                if r.nz and r.indicators(r.c, ptr, r.nz) > 1:
+                    r.inst.indicators()
 
         def get_nominals(p, k):
             view(p, k)[:] = np.concatenate([inst.nominals() for inst in self.instances])

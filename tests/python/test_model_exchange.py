@@ -13,7 +13,7 @@ import pytest
 from fmpy import simulate_fmu
 
 from hypoid.fmu.exchange import ExchangeInstance
-from hypoid.fmu.instance import Instance
+from hypoid.fmu.instance import FmuError, Instance
 from hypoid.fmu.levels import LEVELS
 from hypoid.fmu.values import RPM
 
@@ -165,6 +165,20 @@ def test_gear_and_vehicle_as_one_ode_against_co_simulation(fmu_path):
         richardson = np.max(np.abs(g[n] - (2.0 * fine[n] - coarse[n])))
         assert 1.5 < err_coarse / err_fine < 2.5, n  # first order in the step
         assert richardson < 0.25 * err_fine, n
+
+
+def test_prepared_real_calls_match_the_checked_ones(fmu_path):
+    """ExchangeInstance.real_setter and real_getter (a master's connections at every right-hand
+    side, as bare FMI calls): the values set_reals and get_reals give, and a refused value
+    raises FmuError with the FMU's message as set_reals does."""
+    me = ExchangeInstance(fmu_path).start()
+    refs = me.refs(["T_s", "T_w"])
+    me.real_setter(refs)([12.5, -3.0])
+    assert me.get_reals(refs) == [12.5, -3.0]
+    assert me.real_getter(refs)() == [12.5, -3.0]
+    with pytest.raises(FmuError, match="T_s"):
+        me.real_setter(refs)([float("nan"), 0.0])
+    me.close()
 
 
 def test_friction_tables_keyed_on_the_load_lattice(fmu_path):
