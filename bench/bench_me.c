@@ -7,7 +7,7 @@
  * w_w, the vehicle's T_hs to the gear's T_w, the propeller-shaft torque T_s a function of time.
  *
  *   bench_me GEAR_DIR VEHICLE_DIR [--level full|map|NAME=VALUE,...] [--runs N] [--stop T]
- *            [--rtol R] [--stop-at-outputs 0|1]
+ *            [--rtol R] [--stop-at-outputs 0|1] [--keep-store 0|1]
  *
  * The scene is tests/cosim's (cosim_driver.Scene): from 100 rpm, T_s ramps to 150 N m in 0.3 s
  * (the launch), holds to 1.2 s, a tip-out to -50 N m (coast) by 1.3 s, held to 1.8 s, a tip-in
@@ -36,6 +36,11 @@
 /* --stop-at-outputs 1: the integrator stops at every output (a stop time there) instead of
  * stepping past and interpolating, as fmpy's CVode and most hosts do */
 static int stop_at_outputs;
+/* --keep-store 1: one more gear instance, initialised with the level's parameters, lives
+ * through all the runs, so that the process's table store keeps what the first run solved (its
+ * node tables) for the next: the cost of a run whose friction tables the process already has (a
+ * second instance, a sweep, a rerun while the FMU stays instantiated) */
+static int keep_store;
 
 typedef struct {
     instance gear, vehicle;
@@ -289,12 +294,13 @@ int main(int argc, char **argv)
 {
     fmu_info m_g, m_v;
     fmu_lib f_g, f_v;
+    instance keeper;
     const char *level = "";
     double t_end = 2.5, rtol = 1e-6;
     int runs = 3, k, rc = 0;
     if (argc < 3) {
         fprintf(stderr, "usage: bench_me GEAR_DIR VEHICLE_DIR [--level full|map|NAME=VALUE,...] "
-                "[--runs N] [--stop T] [--rtol R] [--stop-at-outputs 0|1]\n");
+                "[--runs N] [--stop T] [--rtol R] [--stop-at-outputs 0|1] [--keep-store 0|1]\n");
         return 2;
     }
     for (k = 3; k + 1 < argc; k += 2) {
@@ -310,6 +316,8 @@ int main(int argc, char **argv)
             rtol = atof(argv[k + 1]);
         else if (!strcmp(argv[k], "--stop-at-outputs"))
             stop_at_outputs = atoi(argv[k + 1]);
+        else if (!strcmp(argv[k], "--keep-store"))
+            keep_store = atoi(argv[k + 1]);
         else
             return host_fail(argv[k]) ? 2 : 2;
     }
@@ -317,7 +325,13 @@ int main(int argc, char **argv)
         host_load(&f_g, m_g.so_path) || host_load(&f_v, m_v.so_path))
         return 1;
     if (!f_g.get_nominals || !m_g.nx || !m_v.nx) return host_fail("no Model Exchange") ? 1 : 1;
+    if (keep_store && (host_open_as(&keeper, &f_g, &m_g, "keeper", 1) ||
+                       f_g.setup(keeper.c, fmi2False, 0.0, 0.0, fmi2False, 0.0) != fmi2OK ||
+                       set_params(&keeper, level) || f_g.enter(keeper.c) != fmi2OK ||
+                       f_g.exit_init(keeper.c) != fmi2OK))
+        return host_fail("the keeper's initialization") ? 1 : 1;
     for (k = 0; k < runs && !rc; k++) rc = run(&f_g, &m_g, &f_v, &m_v, level, t_end, rtol);
+    if (keep_store) host_close(&keeper);
     host_unload(&f_g);
     host_unload(&f_v);
     host_free_info(&m_g);
