@@ -106,4 +106,9 @@ RECORDS = {r.name: r for r in [
            "hosts' agreement and what tolerances the scene needs",
            ("cosimulation.json",), "python tests/cosim/cosim_driver.py --record && "
            "python tests/cosim/coupling_stability.py --record", R + "cosimulation:page"),
+    Record("me-speed", "The gear and the vehicle as one Model Exchange system: speed",
+           "real-time factor, steps, right-hand sides and events of the launch, tip-out and "
+           "tip-in in a C host (full and map level, rtol 1e-6 and 1e-5, friction tables solved "
+           "or already in the process) and in fmpy's CVode from Python",
+           ("me-speed.json",), "python bench/me_speed.py", R + "pages:tables_page"),
 ]}
