@@ -1,13 +1,13 @@
 /* Real-time factor of the gear and the vehicle FMU as one Model Exchange system in a C host (no
  * Python in the loop): both FMUs dlopened (tests/host/fmu_host.c), their states integrated
  * together by CVODE BDF through the project's solver layer (fmu-src/solver: dense Newton, rtol
- * and rtol x the FMUs' nominals), root finding on the gear's event indicators, an event
+ * and rtol x the FMUs' nominals; --method: Adams or an explicit Runge-Kutta pair instead), root finding on the gear's event indicators, an event
  * iteration at every root and wherever a completed step asks for one; the connections at every
  * right-hand side: the gear's w_w (a state of it: read from the state vector) to the vehicle's
  * w_w, the vehicle's T_hs to the gear's T_w, the propeller-shaft torque T_s a function of time.
  *
  *   bench_me GEAR_DIR VEHICLE_DIR [--level full|map|NAME=VALUE,...] [--runs N] [--stop T]
- *            [--rtol R] [--stop-at-outputs 0|1] [--keep-store 0|1]
+ *            [--rtol R] [--stop-at-outputs 0|1] [--keep-store 0|1] [--method bdf|adams|erk]
  *
  * The scene is tests/cosim's (cosim_driver.Scene): from 100 rpm, T_s ramps to 150 N m in 0.3 s
  * (the launch), holds to 1.2 s, a tip-out to -50 N m (coast) by 1.3 s, held to 1.8 s, a tip-in
@@ -41,6 +41,10 @@ static int stop_at_outputs;
  * node tables) for the next: the cost of a run whose friction tables the process already has (a
  * second instance, a sweep, a rerun while the FMU stays instantiated) */
 static int keep_store;
+/* --method: the host's integrator through the project's layer: CVODE BDF (the default) or
+ * Adams with the dense Newton iteration, or ARKODE's explicit embedded Runge-Kutta pair (the
+ * FMU's own choice in co-simulation for the compliant mesh) */
+static int method = HG_METHOD_BDF;
 
 typedef struct {
     instance gear, vehicle;
@@ -260,7 +264,7 @@ static int run(const fmu_lib *f_g, const fmu_info *m_g, const fmu_lib *f_v, cons
         goto done;
     }
     for (size_t i = 0; i < s.nx_g + s.nx_v; i++) atol[i] *= rtol;
-    opt.method = HG_METHOD_BDF;
+    opt.method = method;
     opt.rtol = rtol;
     opt.atol = atol;
     opt.max_steps = 1000000;
@@ -300,7 +304,8 @@ int main(int argc, char **argv)
     int runs = 3, k, rc = 0;
     if (argc < 3) {
         fprintf(stderr, "usage: bench_me GEAR_DIR VEHICLE_DIR [--level full|map|NAME=VALUE,...] "
-                "[--runs N] [--stop T] [--rtol R] [--stop-at-outputs 0|1] [--keep-store 0|1]\n");
+                "[--runs N] [--stop T] [--rtol R] [--stop-at-outputs 0|1] [--keep-store 0|1] "
+                "[--method bdf|adams|erk]\n");
         return 2;
     }
     for (k = 3; k + 1 < argc; k += 2) {
@@ -318,6 +323,10 @@ int main(int argc, char **argv)
             stop_at_outputs = atoi(argv[k + 1]);
         else if (!strcmp(argv[k], "--keep-store"))
             keep_store = atoi(argv[k + 1]);
+        else if (!strcmp(argv[k], "--method"))
+            method = !strcmp(argv[k + 1], "erk")     ? HG_METHOD_ERK
+                     : !strcmp(argv[k + 1], "adams") ? HG_METHOD_ADAMS
+                                                     : HG_METHOD_BDF;
         else
             return host_fail(argv[k]) ? 2 : 2;
     }
