@@ -7,6 +7,13 @@
  *   bench_fmu FMU_DIR steps [options]         real-time factor of every level against the
  *                                             communication step, 1 us ... 1 s
  *   bench_fmu FMU_DIR run LEVEL [options]     one timed run of one level (for perf record)
+ *   bench_fmu FMU_DIR startup [options]       start of the full level's instances in this
+ *                                             process: instantiate, initialise and the first
+ *                                             10 ms at 1 ms steps, timed for the process's first
+ *                                             instance and for --runs - 1 further instances
+ *                                             (all kept alive), with the resident memory each
+ *                                             further instance adds (one process: run it several
+ *                                             times for a median of first instances)
  *   bench_fmu FMU_DIR replay FILE [options]   the inputs of a recorded co-simulation, one row a
  *                                             communication step (a CSV whose header names
  *                                             inputs, the first column the time), after the
@@ -453,6 +460,40 @@ static int mode_steps(const variant *v, const options *o)
     return 0;
 }
 
+/* Resident set of this process [MB] (Linux; 0 elsewhere). */
+static double rss_mb(void)
+{
+    long pages = 0, resident = 0;
+    FILE *f = fopen("/proc/self/statm", "r");
+    if (!f) return 0.0;
+    if (fscanf(f, "%ld %ld", &pages, &resident) != 2) resident = 0;
+    fclose(f);
+    return (double)resident * 4096.0 / (1024.0 * 1024.0);
+}
+
+static int mode_startup(const variant *v, const options *o)
+{
+    static bench b[MAX_RUNS];
+    double cpu[MAX_RUNS], rss0, rss1 = 0.0, t0;
+    int k, j, rc = 0;
+    for (k = 0; k < o->runs && !rc; k++) {
+        t0 = cpu_now();
+        rc = open_bench(&b[k], v, &LEVELS[0], o) || steps(&b[k], 10, 1e-3);
+        cpu[k] = cpu_now() - t0;
+        if (k == 0) rss1 = rss_mb();
+    }
+    rss0 = rss_mb();
+    for (j = 0; j < k; j++) host_close(&b[j].in);
+    if (rc) return -1;
+    printf("full level, instantiate + initialise + 10 steps of 1 ms: first instance of the "
+           "process %.2f ms CPU", 1e3 * cpu[0]);
+    if (o->runs > 1)
+        printf("; %d further instances: median %.2f ms CPU, %.3f MB resident each",
+               o->runs - 1, 1e3 * median(cpu + 1, o->runs - 1), (rss0 - rss1) / (o->runs - 1));
+    printf("\n");
+    return 0;
+}
+
 static int mode_run(const variant *v, const options *o, const char *name)
 {
     int k;
@@ -523,6 +564,7 @@ static int run_mode(int argc, char **argv, const options *o, const variant *v, i
 {
     if (strcmp(argv[2], "levels") == 0) return mode_levels(v, nv, o);
     if (strcmp(argv[2], "steps") == 0) return mode_steps(v, o);
+    if (strcmp(argv[2], "startup") == 0) return mode_startup(v, o);
     if (argc > 3 && strcmp(argv[2], "run") == 0) return mode_run(v, o, argv[3]);
     if (argc > 3 && strcmp(argv[2], "replay") == 0) return mode_replay(v, o, argv[3]);
     return host_fail("unknown mode");
@@ -536,8 +578,8 @@ int main(int argc, char **argv)
     variant v[MAX_VARIANTS];
     int rc = -1, run = argc > 3 && (strcmp(argv[2], "run") == 0 || strcmp(argv[2], "replay") == 0);
     if (argc < 3 || parse(argc, argv, run ? 4 : 3, &o)) {
-        fprintf(stderr, "usage: bench_fmu FMU_DIR levels|steps|run LEVEL|replay FILE [--h H] "
-                "[--runs N] [--cpu S] [--warm T] [--read none|few|all] [--set NAME=VALUE] "
+        fprintf(stderr, "usage: bench_fmu FMU_DIR levels|steps|startup|run LEVEL|replay FILE "
+                "[--h H] [--runs N] [--cpu S] [--warm T] [--read none|few|all] [--set NAME=VALUE] "
                 "[--levels a,b] [--variant LABEL:NAME=VALUE,...] [--vs FMU_DIR] [--ramp 0|1]\n");
         return 2;
     }
