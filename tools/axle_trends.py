@@ -32,7 +32,7 @@ import friction_figures as ff  # noqa: E402  (gear set 1's virtual cylindrical g
 T_END_S, H_S, MEAN_STEPS = 0.6, 0.02, 10
 PAIRS = 3
 BASE = ["P_loss", "P_in", "P_churn", "P_bearings", "P_seals", "P_axle", "P_in_axle", "eta",
-        "eta_axle", "T_oil"]
+        "eta_axle", "T_oil", "w_p", "w_g"]
 SPLIT = ["P_bearings_p", "P_bearings_g"]  # per bearing pair, where the FMU has them
 PAIR_Q = ("mu", "W", "p_h", "V_s", "u_e", "R_e")
 PAIR_OUT = [f"pair[{k}].{q}" for k in range(1, PAIRS + 1) for q in PAIR_Q]
@@ -130,6 +130,32 @@ def mesh_vs_temperature(r):
     return rows
 
 
+D_SEAL_P_MM, D_SEAL_W_MM = 45.0, 40.0  # the default seal shafts (d_seal_p, d_seal_w)
+
+
+def linke_factor(T_C):
+    """Linke's bracket 145 - 1.6 theta + 350 lg lg(nu_40 + 0.8), nu_40 [mm^2/s] the oil's at
+    40 degC (Vogel, the ledger's density), not below 0 (docs/axle.md)."""
+    rho_40 = bearing_models.lubricant()["rho_15"] * (1.0 - 7e-4 * 25.0)
+    nu_40 = eta_oil_mPas(40.0) / (rho_40 * 1e-3)
+    return max(0.0, 145.0 - 1.6 * T_C + 350.0 * math.log10(math.log10(nu_40 + 0.8)))
+
+
+def seals_vs_temperature(r):
+    """The three seals at 2000 rpm of the pinion, no torque: the FMU with seal_model = linke (the
+    default) and iso14179, and Linke's law worked here at the FMU's shaft speeds."""
+    rows = []
+    for T in (-30.0, -7.0, 20.0, 40.0, 80.0, 100.0):
+        p = r.point(2000, 0.0, T)
+        n_p, n_g = (p[k] * 30.0 / math.pi for k in ("w_p", "w_g"))
+        f = linke_factor(T)
+        rows.append({"T_C": T, "P_seals": p["P_seals"],
+                     "P_seals_iso": r.point(2000, 0.0, T, seal_model="iso14179")["P_seals"],
+                     "linke_pinion": f * 1e-7 * D_SEAL_P_MM ** 2 * n_p,
+                     "linke_shafts": 2.0 * f * 1e-7 * D_SEAL_W_MM ** 2 * n_g})
+    return rows
+
+
 def pinion_share(r):
     rows = []
     for tq in (50.0, 200.0):
@@ -164,8 +190,8 @@ def hand_torques(r):
 
 
 MEASURES = (bearings_vs_torque, spin_vs_temperature, spin_with_aluminium,
-            churning_vs_temperature, mesh_vs_temperature, pinion_share, axle_efficiency,
-            hand_torques)
+            churning_vs_temperature, seals_vs_temperature, mesh_vs_temperature, pinion_share,
+            axle_efficiency, hand_torques)
 
 
 def fmt(x, f):
@@ -201,6 +227,17 @@ def sections(res):
                    ["oil °C", "P_churn W"],
                    [[f"{c['T_C']:.0f}", f"{c['P_churn']:.1f}"]
                     for c in res["churning_vs_temperature"]])
+    out += section(
+        "Seals against the oil temperature",
+        "2000 rpm of the pinion, no torque: the pinion seal (45 mm) and the two axle-shaft seals "
+        "(40 mm). The FMU with `seal_model` = linke (the default) and iso14179; Linke's law "
+        "worked here at the FMU's shaft speeds, with the oil's viscosity at 40 °C.",
+        ["oil °C", "P_seals W", "Linke: pinion W", "Linke: shafts W", "Linke W",
+         "P_seals iso14179 W", "linke / iso14179"],
+        [[f"{s['T_C']:.0f}", f"{s['P_seals']:.2f}", f"{s['linke_pinion']:.2f}",
+          f"{s['linke_shafts']:.2f}", f"{s['linke_pinion'] + s['linke_shafts']:.2f}",
+          f"{s['P_seals_iso']:.2f}", f"{s['P_seals'] / s['P_seals_iso']:.2f}"]
+         for s in res["seals_vs_temperature"]])
     out += section(
         "Mesh friction against the oil temperature",
         "Rigid mesh, `ehl_thermal`, the defaults; μ load-weighted over the pairs. Xu et al.'s "

@@ -13,6 +13,7 @@
 #define SPIN_EPS 1e-2   /* regularisation of the rotation direction of the loss torques [rad/s] */
 #define RHO_EXPANSION 7e-4 /* volumetric expansion of gear oils [1/K] (assumed, docs/axle.md) */
 #define T_15C 288.15
+#define T_40C 313.15       /* Linke's reference viscosity [K] */
 #define T_PRELOAD 293.15   /* the workshop sets the preloads at 20 degC [K] */
 #define ALPHA_STEEL 11.5e-6 /* thermal expansion of the steel shaft and bearings [1/K] (docs/axle.md) */
 #define Y0_PER_Y 0.55      /* ISO 76: Y_0 = 0.22 cot(alpha), Y = 0.4 cot(alpha) for tapered rollers */
@@ -174,6 +175,10 @@ int hg_ledger_setup(hg_ledger *a, const hg_vars *v, int gear_set_builtin,
     }
     a->T_seal_p = hg_seal_torque(v->d_seal_p);
     a->T_seal_w = 2.0 * hg_seal_torque(v->d_seal_w);
+    a->seal_linke = v->seal_model == HG_SEAL_MODEL_LINKE;
+    a->d_seal_p = v->d_seal_p;
+    a->d_seal_w = v->d_seal_w;
+    a->nu_40 = hg_ledger_nu(lub, T_40C);
     return 0;
 }
 
@@ -246,7 +251,14 @@ void hg_ledger_losses(const hg_ledger *a, double w_p, double w_g, double W_t, do
     ev->P_bearings_p = opposing(pair_moment(a, HG_BRG_P_HEAD, ev->nu, w_p, ev), w_p, &ev->T_p);
     ev->P_bearings_g = opposing(pair_moment(a, HG_BRG_G_NEAR, ev->nu, w_g, ev), w_g, &ev->T_g);
     ev->P_bearings = ev->P_bearings_p + ev->P_bearings_g;
-    ev->P_seals = opposing(a->T_seal_p, w_p, &ev->T_p) + opposing(a->T_seal_w, w_g, &ev->T_g);
+    ev->T_seal_p = a->T_seal_p;
+    ev->T_seal_w = a->T_seal_w;
+    if (a->seal_linke) {
+        double f = hg_seal_linke_factor(T_oil, a->nu_40);
+        ev->T_seal_p = hg_seal_torque_linke(a->d_seal_p, f);
+        ev->T_seal_w = 2.0 * hg_seal_torque_linke(a->d_seal_w, f);
+    }
+    ev->P_seals = opposing(ev->T_seal_p, w_p, &ev->T_p) + opposing(ev->T_seal_w, w_g, &ev->T_g);
     ev->P_churn = opposing(hg_churn_torque(&a->churn, rho, ev->nu, w_g), w_g, &ev->T_g);
 }
 

@@ -27,7 +27,10 @@ typedef struct {
     double F_pre_p, F_pre_g;  /* preloads of the pinion and carrier pairs as set at 20 degC [N] */
     double k_ax_p, k_ax_g;    /* axial stiffness of the preloaded pairs [N/m] */
     double d_alpha;           /* thermal expansion of the carrier less that of steel [1/K] */
-    double T_seal_p, T_seal_w; /* seal torques: pinion seal, the two axle-shaft seals [N m] */
+    double T_seal_p, T_seal_w; /* ISO seal torques: pinion seal, the two axle-shaft seals [N m] */
+    int seal_linke;           /* seal_model = linke: the seal torques follow the oil temperature */
+    double d_seal_p, d_seal_w; /* seal shaft diameters [m] */
+    double nu_40;             /* the oil's kinematic viscosity at 40 degC [m^2/s] (Linke) */
     hg_housing housing;
     double h_housing;         /* > 0: fixed convective coefficient [W/(m^2 K)]; 0: correlations */
     double C_sump;            /* heat capacity of oil, gears and housing [J/K] */
@@ -40,6 +43,7 @@ typedef struct {
     double P_bearings_p, P_bearings_g;   /* the pinion's and the carrier's bearing pairs [W] */
     double F_pre_p, F_pre_g;             /* the pairs' preloads at T_oil [N] */
     double nu;                           /* kinematic viscosity of the oil at T_oil [m^2/s] */
+    double T_seal_p, T_seal_w;           /* seal torques at T_oil: pinion, both shafts [N m] */
     double Fr[HG_N_BRG], Fa[HG_N_BRG];   /* bearing loads [N] */
 } hg_ledger_eval;
 

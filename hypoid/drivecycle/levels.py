@@ -43,7 +43,7 @@ REACHES_EVERY_LEVEL = frozenset({
     "brg_pt_d", "brg_pt_D", "brg_pt_Y", "brg_pt_x", "brg_gn_d", "brg_gn_D", "brg_gn_Y",
     "brg_gn_x", "brg_gf_d", "brg_gf_D", "brg_gf_Y", "brg_gf_x", "brg_p_R1", "brg_p_S1",
     "brg_g_R1", "brg_g_S1", "brg_p_C0", "brg_g_C0", "F_pre_p", "F_pre_g", "k_ax_p", "k_ax_g",
-    "alpha_carrier", "brg_feed", "d_seal_p", "d_seal_w", "T_oil0",
+    "alpha_carrier", "brg_feed", "d_seal_p", "d_seal_w", "seal_model", "T_oil0",
     "C_sump", "A_housing", "L_housing", "eps_housing", "h_housing"})
 MESH_FRICTION = frozenset({    # the friction model and its data: not in the built-in maps
     "gear_set_file", "lubricant_file", "mu_const", "E", "nu", "k_s", "rho_s", "c_s", "tau_0",

@@ -18,6 +18,17 @@ int main(void)
     /* ISO/TR 14179-2: d = 40 mm, n = 3000 r/min -> P = 7.69e-6 * 1600 * 3000 = 36.912 W */
     double w = 3000.0 * HG_PI / 30.0;
     CHECK_CLOSE(hg_seal_torque(0.040) * w, 36.912, 1e-12, 0);
+    /* Linke, 100 mm^2/s oil: lg lg 100.8 = lg 2.0034605 = 0.3017808, 350 x = 105.62328;
+     * 20 degC: 145 - 32 + 105.62328 = 218.62328 -> 218.62328e-7 * 1600 * 3000 = 104.93917 W;
+     * 80 degC: 145 - 128 + 105.62328 = 122.62328 -> 58.85917 W (the warm oil: -44 %) */
+    CHECK_CLOSE(hg_seal_linke_factor(293.15, 100e-6), 218.62328, 1e-6, 0);
+    CHECK_CLOSE(hg_seal_torque_linke(0.040, hg_seal_linke_factor(293.15, 100e-6)) * w, 104.93917,
+                1e-6, 0);
+    CHECK_CLOSE(hg_seal_torque_linke(0.040, hg_seal_linke_factor(353.15, 100e-6)) * w, 58.85917,
+                1e-6, 0);
+    /* ISO's 76.9 at 108.64 degC; held at 0 beyond 156.6 degC */
+    CHECK_CLOSE(hg_seal_linke_factor(273.15 + (250.62328 - 76.9) / 1.6, 100e-6), 76.9, 1e-6, 0);
+    CHECK(hg_seal_linke_factor(273.15 + 160.0, 100e-6) == 0.0);
     /* natural convection, dT 50 K on L = 0.25 m: 1.42 (200)^(1/4) = 5.34006 W/(m^2 K) */
     CHECK_CLOSE(hg_h_natural(50.0, 0.25), 5.340056, 1e-6, 0);
     CHECK_CLOSE(hg_h_natural(-50.0, 0.25), 5.340056, 1e-6, 0);

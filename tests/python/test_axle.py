@@ -1,8 +1,8 @@
 """The axle's loss ledger, its sump and the power-flow efficiencies (docs/axle.md).
 
 Independent values: the published loss formulas worked out here in Python at the FMU's
-operating point (Changenet & Velex churning, the SKF model's bearing moments, ISO/TR 14179-2
-seals), the heat balance and the energy audit (identities that the integrator
+operating point (Changenet & Velex churning, the SKF model's bearing moments, Linke's and
+ISO/TR 14179-2's seals), the heat balance and the energy audit (identities that the integrator
 must keep), and the direction of the power flow in drive, coast, engine braking and a torque
 reversal."""
 
@@ -52,6 +52,14 @@ def churning_power(w, T, R=0.5 * 2 * 95.60e-3 * math.sin(math.radians(59.65)), b
     return 0.5 * rho * w ** 2 * S_m * R ** 3 * C_m * w
 
 
+def seal_power(d_mm, n_rpm, T):
+    """Linke's lip-seal loss [W] (docs/axle.md): [145 - 1.6 theta + 350 lg lg(nu_40 + 0.8)] d^2 n
+    1e-7, theta the oil temperature [degC], nu_40 [mm^2/s] the oil's at 40 degC."""
+    nu_40 = oil(313.15)[1] * 1e6
+    f = 145.0 - 1.6 * (T - 273.15) + 350.0 * math.log10(math.log10(nu_40 + 0.8))
+    return max(f, 0.0) * 1e-7 * d_mm ** 2 * n_rpm
+
+
 # The default bearings (d, D [m], Y, SKF's R_1 and S_1 of the series), from bearing catalogues
 # (docs/axle.md): 32308 40 x 90 mm, Y 1.74, 32306 30 x 72 mm, Y 1.90 (series 323); 32010 X
 # 50 x 80 mm, Y 1.41 (series 320 X).
@@ -95,8 +103,43 @@ def test_spin_losses_at_no_load_match_the_published_formulas(harness):
     assert r[3] == pytest.approx(pinion * w_p, rel=0.01)
     assert r[4] == pytest.approx(2 * skf_moment(*CARRIER, F_g, w_g, T) * w_g, rel=0.01)
     assert r[7] == r[3] + r[4]
-    seals = 7.69e-6 * (45 ** 2 * w_p / RPM + 2 * 40 ** 2 * w_g / RPM)  # ISO/TR 14179-2
+    seals = seal_power(45, w_p / RPM, T) + 2 * seal_power(40, w_g / RPM, T)
     assert r[5] == pytest.approx(seals, rel=1e-3)  # sign regularisation: 1e-2 rad/s
+
+
+SEAL_T = (-30.0, -7.0, 20.0, 40.0, 80.0, 100.0, 120.0)  # oil temperatures [degC]
+
+
+def seal_losses(harness, **values):
+    """P_seals of the rigid mesh at 2000 rpm of the pinion, no torque, oil fixed at each of
+    SEAL_T, with the pinion and ring speeds."""
+    out = []
+    for t in SEAL_T:
+        h = harness().start(dict(axle_losses=FULL, mesh_model=3, friction_model=2, mu_const=0.0,
+                                 T_s=0.0, w_set=2000 * RPM, w_p0=2000 * RPM, T_bath=273.15 + t,
+                                 **values), checked=False)
+        out.append(h.record(0.1, 0.05, ["P_seals", "w_p", "w_g"])[-1])
+    return out
+
+
+def test_seal_loss_falls_as_the_oil_warms_by_linkes_law(harness):
+    """The default seals (Linke) from -30 to 120 degC: the loss falls at every step, and each
+    matches Linke's law worked here for the pinion seal and the two axle-shaft seals, to 1e-3
+    (the direction smoothing)."""
+    rows = seal_losses(harness)
+    P = [r[0] for r in rows]
+    assert all(a > b for a, b in zip(P, P[1:])), P
+    for t, (P_s, w_p, w_g) in zip(SEAL_T, rows):
+        want = seal_power(45, w_p / RPM, 273.15 + t) + 2 * seal_power(40, w_g / RPM, 273.15 + t)
+        assert P_s == pytest.approx(want, rel=1e-3), t
+    assert P[0] / P[-1] > 4.0  # 298.6 against 58.6 in Linke's bracket
+
+
+def test_iso_seals_keep_their_torque_at_every_oil_temperature(harness):
+    """seal_model = iso14179: 7.69e-6 d^2 n at every oil temperature, to 1e-3."""
+    for t, (P_s, w_p, w_g) in zip(SEAL_T, seal_losses(harness, seal_model=2)):
+        want = 7.69e-6 * (45 ** 2 * w_p / RPM + 2 * 40 ** 2 * w_g / RPM)  # ISO/TR 14179-2
+        assert P_s == pytest.approx(want, rel=1e-3), t
 
 
 HAND_T, HAND_W = 293.15, 30 * RPM  # a torque wrench at the pinion nut, oil at 20 degC
@@ -171,7 +214,7 @@ def test_rigid_mesh_carries_the_torque_left_after_the_pinion_drag(harness):
             axis=0)
     full = dict(axle_losses=FULL, T_s=20.0)
     P, P_bp, P_s, w_p, w_g = mesh_loss(mesh_model=3, **full)
-    drag = (P_bp + 7.69e-6 * 45 ** 2 * w_p / RPM) / w_p  # the pinion pair and the pinion seal
+    drag = (P_bp + seal_power(45, w_p / RPM, 293.15)) / w_p  # the pinion pair and the pinion seal
     alone = mesh_loss(mesh_model=3, T_s=20.0 - drag)[0]
     assert P == pytest.approx(alone, rel=0.01)
     assert P == pytest.approx(mesh_loss(**full)[0], rel=0.01)  # the varying mesh
