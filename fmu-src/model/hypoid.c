@@ -15,6 +15,22 @@
 #define MAX_EVENTS_PER_STEP 100000
 #define MAX_SOLVER_STEPS 500000 /* per call of the integrator */
 
+void hg_model_start_values(hg_vars *v)
+{
+    int r;
+    memset(v, 0, sizeof *v);
+    for (r = 0; r < HG_NUM_VARS; r++) {
+        const hg_var_info *info = &hg_var_table[r];
+        void *p = hg_var_ptr(v, info);
+        if (info->type == HG_REAL)
+            *(double *)p = info->start;
+        else if (info->type == HG_STRING)
+            *(const char **)p = info->start_string;
+        else
+            *(int *)p = (int)info->start;
+    }
+}
+
 hg_model *hg_model_new(const char *resource_dir, hg_log_fn log, void *log_ctx)
 {
     hg_model *m = calloc(1, sizeof *m);
@@ -152,7 +168,7 @@ int hg_model_setup(hg_model *m, hg_vars *v, double t0, char *err, size_t errlen)
 {
     const hg_setup *s = &m->s;
     if (hg_setup_load(&m->s, m->resource_dir, &m->log, v, err, errlen) ||
-        hg_ftp_setup(&m->tables, &m->s, v, err, errlen))
+        hg_ftp_setup(&m->tables, &m->s, m->resource_dir, v, err, errlen))
         return -1;
     hg_stepping_start(&m->rt, &m->s, v, t0);
     if (make_solver(m, err, errlen)) return -1;

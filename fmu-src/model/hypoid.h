@@ -14,6 +14,11 @@
 
 typedef struct hg_model hg_model;
 
+/* v at the start values of modelDescription/variables.toml (strings point at the table's own
+ * start strings; the FMI layer copies its strings instead): for C programs that use the model
+ * without the FMI layer (tools/table_files.c, the C tests). */
+void hg_model_start_values(hg_vars *v);
+
 /* log: messages to the host (category "logEvents", "logStatusWarning", ...); may be NULL. */
 hg_model *hg_model_new(const char *resource_dir, hg_log_fn log, void *log_ctx);
 void hg_model_free(hg_model *m);

@@ -32,18 +32,7 @@ static void record(void *ctx, const char *category, const char *message)
 /* Every variable at its start value; strings point at the table's (the model only reads them). */
 static void start_values(hg_vars *v)
 {
-    int r;
-    memset(v, 0, sizeof *v);
-    for (r = 0; r < HG_NUM_VARS; r++) {
-        const hg_var_info *info = &hg_var_table[r];
-        void *p = hg_var_ptr(v, info);
-        if (info->type == HG_REAL)
-            *(double *)p = info->start;
-        else if (info->type == HG_STRING)
-            *(const char **)p = info->start_string;
-        else
-            *(int *)p = (int)info->start;
-    }
+    hg_model_start_values(v);
 }
 
 /* 1 when every Real output of a and b is the same to the bit. */
