@@ -44,15 +44,18 @@ if(WIN32 OR HG_WIN64_DLL OR HG_WIN64_VEHICLE_DLL)
 endif()
 
 # hg_fmu(TARGET FILE fmu STAGE dir XML xml BINARY target [PLATFORM name] [WIN64_DLL dll]
-#        [WIN64_PLATFORM name] [RESOURCES dir] [EXTRA dir] LICENSES FILE=NAME...)
+#        [WIN64_PLATFORM name] [RESOURCES dir] [TABLES dir stamp target] [EXTRA dir]
+#        LICENSES FILE=NAME...)
 # FILE zips STAGE: XML as modelDescription.xml, BINARY's library under binaries/<PLATFORM>/
 # (HG_PLATFORM unless given; copied there unless it is built there), WIN64_DLL under
-# binaries/<WIN64_PLATFORM>/ (win64 unless given; Linux builds), RESOURCES as resources/, EXTRA
+# binaries/<WIN64_PLATFORM>/ (win64 unless given; Linux builds), RESOURCES as resources/, TABLES
+# (the directory, the file its generator last wrote and the target that writes it: built first,
+# so that parallel FMU builds never write the tables side by side) as resources/tables/, EXTRA
 # as extra/, the LICENSES (and HG_LICENSES_WIN64 with a win64 binary) under
 # documentation/licenses/. TARGET (in ALL) makes it.
 function(hg_fmu target)
   cmake_parse_arguments(F "" "FILE;STAGE;XML;BINARY;PLATFORM;WIN64_DLL;WIN64_PLATFORM;RESOURCES;EXTRA"
-                        "LICENSES" ${ARGN})
+                        "LICENSES;TABLES" ${ARGN})
   if(NOT F_PLATFORM)
     set(F_PLATFORM ${HG_PLATFORM})
   endif()
@@ -95,6 +98,13 @@ function(hg_fmu target)
       list(APPEND _zip ${_kind})
     endif()
   endforeach()
+  if(F_TABLES)
+    list(GET F_TABLES 0 _tables)
+    list(GET F_TABLES 1 _stamp)
+    list(APPEND _cmds COMMAND ${CMAKE_COMMAND} -E copy_directory "${_tables}"
+         "${F_STAGE}/resources/tables")
+    list(APPEND _deps "${_stamp}")
+  endif()
   set(_lic_dir "${F_STAGE}/documentation/licenses")
   list(APPEND _cmds COMMAND ${CMAKE_COMMAND} -E rm -rf "${_lic_dir}"
        COMMAND ${CMAKE_COMMAND} -E make_directory "${_lic_dir}")
@@ -115,4 +125,8 @@ function(hg_fmu target)
     DEPENDS ${_deps}
     COMMENT "Assembling ${F_FILE}")
   add_custom_target(${target} ALL DEPENDS "${F_FILE}")
+  if(F_TABLES)
+    list(GET F_TABLES 2 _tables_target)
+    add_dependencies(${target} ${_tables_target})
+  endif()
 endfunction()

@@ -68,9 +68,7 @@ static int open_readonly(const char *path)
 }
 #endif
 
-/* Opens path only when it is a regular file: a directory, device or FIFO is refused at once
- * (a plain fopen of a FIFO would wait for a writer forever). *len receives the file size. */
-static FILE *open_regular(const char *path, long *len, char *err, size_t errlen)
+FILE *hg_open_regular(const char *path, long *len, char *err, size_t errlen)
 {
     struct stat st;
     FILE *fp;
@@ -98,7 +96,7 @@ static char *read_whole_file(const char *path, long *size, char *err, size_t err
 {
     char *buf = NULL;
     long len = 0;
-    FILE *fp = open_regular(path, &len, err, errlen);
+    FILE *fp = hg_open_regular(path, &len, err, errlen);
     if (!fp) return NULL;
     if (len == 0) {
         hg_errorf(err, errlen, "data file '%s' is empty", path);

@@ -13,6 +13,7 @@
 #define HG_DATAFILE_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "io/errmsg.h"
 
@@ -53,6 +54,11 @@ int hg_datafile_check_all_used(const hg_datafile *f, char *err, size_t errlen);
  * `hypoid effmap` records of the gear set and lubricant a map was made from. */
 #define HG_HASH_HEX 17
 int hg_datafile_hash(const char *path, char hex[HG_HASH_HEX], char *err, size_t errlen);
+
+/* Opens path for reading ("rb") only when it is a regular file: a directory, device or FIFO is
+ * refused at once (a plain fopen of a FIFO would wait for a writer forever). *len receives the
+ * file size. NULL with err filled when it cannot. */
+FILE *hg_open_regular(const char *path, long *len, char *err, size_t errlen);
 
 /* Is path absolute on this platform? ("/..."; on Windows also "C:\\...", "C:/..." and "\\\\...") */
 int hg_path_is_absolute(const char *path);

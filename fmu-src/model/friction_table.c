@@ -405,8 +405,8 @@ static int build_node(void *table, void *ctx)
     return 0;
 }
 
-/* The node table of table index i for key k, from the store (solved now if no instance of the
- * process has it), held until hg_store_put; NULL when out of memory. */
+/* The node table of table index i for key k, from the store (read from the FMU's resources or
+ * solved now if no instance of the process has it), held until hg_store_put; NULL when out of memory. */
 static const hg_friction_table *node(hg_ft_set *s, const hg_friction_config *cfg,
                                      const hg_gearset *g, int i, const hg_ft_key *k)
 {
@@ -419,7 +419,7 @@ static const hg_friction_table *node(hg_ft_set *s, const hg_friction_config *cfg
     id = hg_store_hash(id, k, sizeof *k);
     job.cfg = cfg, job.g = g, job.flank = i / s->n_levels, job.level = i % s->n_levels;
     job.gear_follows = s->gear_follows, job.key = k;
-    t = hg_store_get(id, sizeof *t, build_node, &job, NULL, &built);
+    t = hg_store_get_shipped(s->resource_dir, id, sizeof *t, build_node, &job, &built);
     s->solved += (unsigned long)built;
     if (t && !memcmp(&t->key, k, sizeof *k)) return t;
     hg_store_put(t); /* a hash collision (never seen) or out of memory: the direct solve */

@@ -162,6 +162,8 @@ typedef struct {
     unsigned long long content[2]; /* the store's hash of the friction model, gear set and
                                       gear_follows (hg_ft_set_alloc) */
     unsigned long solved;          /* node tables this set solved (diagnostics) */
+    const char *resource_dir;      /* where shipped node tables lie (resources/tables/), or
+                                      NULL (hg_store_get_shipped) */
 } hg_ft_set;
 
 /* Prepares s, which must be zeroed or prepared before, for the tables of friction model cfg on

@@ -25,7 +25,8 @@ void hg_ftp_free(hg_ft_set **tables)
     *tables = NULL;
 }
 
-int hg_ftp_setup(hg_ft_set **tables, hg_setup *s, const hg_vars *v, char *err, size_t errlen)
+int hg_ftp_setup(hg_ft_set **tables, hg_setup *s, const char *resource_dir, const hg_vars *v,
+                 char *err, size_t errlen)
 {
     s->p.tables = NULL;
     if (!wanted(s, v)) {
@@ -37,6 +38,7 @@ int hg_ftp_setup(hg_ft_set **tables, hg_setup *s, const hg_vars *v, char *err, s
         return -1;
     }
     hg_ft_set_alloc(*tables, &s->p.friction, &s->gear, s->p.mesh == HG_MESH_MODEL_RIGID);
+    (*tables)->resource_dir = resource_dir;
     return 0;
 }
 

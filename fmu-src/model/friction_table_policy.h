@@ -16,8 +16,11 @@
 #include "model/stepping.h"
 
 /* *tables for the set-up s and the variables v: allocated (unbuilt) when wanted, else freed and
- * NULL; s->p.tables is cleared (the first step picks). -1 with a message when out of memory. */
-int hg_ftp_setup(hg_ft_set **tables, hg_setup *s, const hg_vars *v, char *err, size_t errlen);
+ * NULL; s->p.tables is cleared (the first step picks). Node tables shipped in
+ * resource_dir/tables/ are read rather than solved (hg_store_get_shipped); resource_dir must
+ * outlive *tables. -1 with a message when out of memory. */
+int hg_ftp_setup(hg_ft_set **tables, hg_setup *s, const char *resource_dir, const hg_vars *v,
+                 char *err, size_t errlen);
 void hg_ftp_free(hg_ft_set **tables);
 
 /* At a step's start with inputs u, before the step begins: moves rt's key onto the operating

@@ -121,15 +121,17 @@ static int read_gearset(void *gear, void *ctx)
 
 /* The gear set of the file at path into *g: read and checked once per file content in the
  * process (the store's entry, named by the file's content hash), copied here. */
-static int gearset_of_file(const char *path, hg_gearset *g, char *why, size_t why_len)
+static int gearset_of_file(const char *resource_dir, const char *path, hg_gearset *g, char *why,
+                           size_t why_len)
 {
     char hash[HG_HASH_HEX];
     gearset_job job;
     const hg_gearset *read;
     if (hg_datafile_hash(path, hash, why, why_len)) return -1;
     job.path = path, job.why = why, job.why_len = why_len;
-    read = hg_store_get(hg_store_hash(hg_store_id_of("gear-set file"), hash, sizeof hash),
-                        sizeof *read, read_gearset, &job, NULL, NULL);
+    read = hg_store_get_shipped(resource_dir,
+                                hg_store_hash(hg_store_id_of("gear-set file"), hash, sizeof hash),
+                                sizeof *read, read_gearset, &job, NULL);
     if (!read) return *why ? -1 : hg_gearset_load(path, g, why, why_len); /* out of memory */
     memcpy(g, read, sizeof *g);
     hg_store_put(read);
@@ -143,7 +145,7 @@ static int load_gearset(hg_setup *s, const char *resource_dir, const hg_vars *v,
     char why[HG_ERRLEN] = "";
     const hg_phase_tables *held;
     if (resolve(&f, resource_dir, err, errlen)) return -1;
-    if (gearset_of_file(f.path, &s->gear, why, sizeof why))
+    if (gearset_of_file(resource_dir, f.path, &s->gear, why, sizeof why))
         return load_failed(&f, why, err, errlen);
     hg_gearset_scale(&s->gear, v->k_m_scale, v->e_0_scale);
     held = s->phase;
@@ -239,7 +241,7 @@ static int build_z_table(void *table, void *lub)
     return 0;
 }
 
-static void ehl_params(hg_setup *s, const hg_vars *v)
+static void ehl_params(hg_setup *s, const char *resource_dir, const hg_vars *v)
 {
     hg_ehl_params *e = &s->p.friction.ehl;
     const hg_z_table *held;
@@ -276,9 +278,10 @@ static void ehl_params(hg_setup *s, const hg_vars *v)
     s->z_table = NULL;
     if (e->roelands_Z == HG_Z_EXACT && (e->thermal || v->friction_model ==
                                          HG_FRICTION_MODEL_EHL_ISOTHERMAL))
-        s->z_table = hg_store_get(hg_store_hash(hg_store_id_of("Z_exact over T"), &s->lub,
-                                                sizeof s->lub),
-                                  sizeof *s->z_table, build_z_table, &s->lub, NULL, NULL);
+        s->z_table = hg_store_get_shipped(resource_dir,
+                                          hg_store_hash(hg_store_id_of("Z_exact over T"),
+                                                        &s->lub, sizeof s->lub),
+                                          sizeof *s->z_table, build_z_table, &s->lub, NULL);
     hg_store_put(held); /* after: the same lubricant finds the table it held */
     e->z_table = s->z_table; /* NULL (out of memory): Z_exact solved at each temperature */
     s->p.friction.lub = &s->lub;
@@ -433,7 +436,7 @@ int hg_setup_load(hg_setup *s, const char *resource_dir, const hg_logger *lg, hg
                   "is %d)", v->mesh_model);
         return -1;
     }
-    ehl_params(s, v);
+    ehl_params(s, resource_dir, v);
     if (load_map(s, resource_dir, v, err, errlen)) return -1;
     if (damping(s, lg, v, err, errlen)) return -1;
     hg_plausibility_warn(v, lg);

@@ -1,8 +1,11 @@
 /* The process's store of read-only tables: see table_store.h. */
 #include "model/table_store.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "io/tablefile.h"
 
 #ifdef _WIN32
 #include <windows.h>
@@ -28,6 +31,7 @@ typedef struct entry {
     size_t size;
     int refs;                  /* holders */
     int building;              /* its build runs (on the thread that asked first) */
+    int shipped;               /* plain bytes, from hg_store_get_shipped */
     unsigned long used;        /* the store's clock when last released */
     hg_store_free_fn free_fn;
     double content[1];         /* size bytes (double: aligned for any table) */
@@ -134,8 +138,8 @@ static void take(entry *e)
     if (e->refs++ == 0) store.idle -= e->size;
 }
 
-const void *hg_store_get(hg_store_id id, size_t size, hg_store_build_fn build, void *ctx,
-                         hg_store_free_fn free_fn, int *built)
+static const void *get(hg_store_id id, size_t size, hg_store_build_fn build, void *ctx,
+                       hg_store_free_fn free_fn, int shipped, int *built)
 {
     entry *e;
     if (built) *built = 0;
@@ -156,6 +160,7 @@ const void *hg_store_get(hg_store_id id, size_t size, hg_store_build_fn build, v
     e->refs = 1;
     e->building = 1;
     e->free_fn = free_fn;
+    e->shipped = shipped;
     e->next = store.head;
     store.head = e;
     store.bytes += size;
@@ -176,6 +181,71 @@ const void *hg_store_get(hg_store_id id, size_t size, hg_store_build_fn build, v
     wake_all();
     unlock();
     return e->content;
+}
+
+const void *hg_store_get(hg_store_id id, size_t size, hg_store_build_fn build, void *ctx,
+                         hg_store_free_fn free_fn, int *built)
+{
+    return get(id, size, build, ctx, free_fn, 0, built);
+}
+
+/* A shipped table's build: its file, or the build. */
+typedef struct {
+    const char *resource_dir;
+    hg_store_id id;
+    size_t size;
+    hg_store_build_fn build;
+    void *ctx;
+    int loaded;
+} shipped_job;
+
+static int load_or_build(void *table, void *ctx)
+{
+    shipped_job *j = ctx;
+    char name[HG_TABLEFILE_NAME], *path;
+    size_t n;
+    hg_tablefile_name(j->id.a, j->id.b, name);
+    n = strlen(j->resource_dir) + strlen("/tables/") + strlen(name) + 1;
+    if ((path = malloc(n)) != NULL) {
+        snprintf(path, n, "%s/tables/%s", j->resource_dir, name);
+        j->loaded = hg_tablefile_read(path, j->id.a, j->id.b, table, j->size) == 0;
+        free(path);
+        if (j->loaded) return 0;
+    }
+    return j->build(table, j->ctx);
+}
+
+const void *hg_store_get_shipped(const char *resource_dir, hg_store_id id, size_t size,
+                                 hg_store_build_fn build, void *ctx, int *built)
+{
+    shipped_job job;
+    const void *table;
+    int made;
+    if (!resource_dir || !*resource_dir) return get(id, size, build, ctx, NULL, 1, built);
+    job.resource_dir = resource_dir, job.id = id, job.size = size;
+    job.build = build, job.ctx = ctx, job.loaded = 0;
+    table = get(id, size, load_or_build, &job, NULL, 1, &made);
+    if (built) *built = made && !job.loaded;
+    return table;
+}
+
+int hg_store_write_shipped(const char *dir)
+{
+    entry *e;
+    int n = 0;
+    lock();
+    for (e = store.head; e && n >= 0; e = e->next) {
+        char name[HG_TABLEFILE_NAME], path[4096];
+        if (!e->shipped || e->building) continue;
+        hg_tablefile_name(e->id.a, e->id.b, name);
+        if (snprintf(path, sizeof path, "%s/%s", dir, name) >= (int)sizeof path ||
+            hg_tablefile_write(path, e->id.a, e->id.b, e->content, e->size))
+            n = -1;
+        else
+            n++;
+    }
+    unlock();
+    return n;
 }
 
 void hg_store_put(const void *table)

@@ -46,6 +46,19 @@ void hg_store_detach(void);
 const void *hg_store_get(hg_store_id id, size_t size, hg_store_build_fn build, void *ctx,
                          hg_store_free_fn free_fn, int *built);
 
+/* hg_store_get for a table of plain bytes (no pointers: nothing to free) that the FMU may ship:
+ * on a miss, the file resource_dir/tables/<id>.tbl (io/tablefile.h, written at build time by
+ * hg_store_write_shipped) gives the content when it passes every check of its header and
+ * checksum, else build computes it as hg_store_get does (*built is 1 only then). The file holds
+ * what build computed for the same id, so the content is the same either way. resource_dir NULL
+ * or "": no file is looked for. */
+const void *hg_store_get_shipped(const char *resource_dir, hg_store_id id, size_t size,
+                                 hg_store_build_fn build, void *ctx, int *built);
+
+/* Writes every entry that hg_store_get_shipped gave as dir/<id>.tbl; the number written, or -1
+ * (tools/table_files.c, at build time). */
+int hg_store_write_shipped(const char *dir);
+
 /* Releases an entry that hg_store_get gave (NULL: nothing). */
 void hg_store_put(const void *table);
 
