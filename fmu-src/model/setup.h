@@ -29,6 +29,7 @@ typedef struct {
     int steps_per_mesh;   /* per mesh cycle: the fixed step (newmark) or the automatic max_step */
     int fixed_step;       /* the solver takes fixed steps (newmark) */
     int explicit_rk;      /* arkode_erk: stability-bounded steps, no automatic max_step */
+    int max_order;        /* highest order of CVODE's BDF (0: its own, 5); see bdf_max_order */
     double f_max;         /* highest natural frequency of the linearised system [Hz] */
     double window_angle;  /* pinion angle of one averaging window [rad] */
 } hg_setup;

@@ -20,6 +20,7 @@ typedef struct {
     double rtol;
     const double *atol; /* one per state */
     long max_steps;     /* internal steps allowed per hg_solver_advance call */
+    int max_order;      /* highest order of the multistep methods (0: the method's own) */
 } hg_solver_options;
 
 typedef struct hg_solver hg_solver;

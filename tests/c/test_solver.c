@@ -50,7 +50,8 @@ static double zero_exact(const oscillator *o, int k)
     return (first + k * HG_PI) / wd;
 }
 
-static hg_solver *make(hg_method method, oscillator *o, int n_roots, double h)
+static hg_solver *make_order(hg_method method, oscillator *o, int n_roots, double h,
+                             int max_order)
 {
     static const double atol[2] = {1e-12, 1e-12};
     const double y0[2] = {1.0, 0.0};
@@ -61,6 +62,7 @@ static hg_solver *make(hg_method method, oscillator *o, int n_roots, double h)
     opt.rtol = 1e-10;
     opt.atol = atol;
     opt.max_steps = 1000000;
+    opt.max_order = max_order;
     s = hg_solver_new(2, n_roots, rhs, n_roots ? root_x : NULL, o, &opt, err, sizeof err);
     CHECK(s != NULL);
     if (!s) {
@@ -70,6 +72,11 @@ static hg_solver *make(hg_method method, oscillator *o, int n_roots, double h)
     CHECK(hg_solver_set_max_step(s, h, err, sizeof err) == 0);
     CHECK(hg_solver_restart(s, 0.0, y0, 0.0, err, sizeof err) == 0);
     return s;
+}
+
+static hg_solver *make(hg_method method, oscillator *o, int n_roots, double h)
+{
+    return make_order(method, o, n_roots, h, 0);
 }
 
 /* Two periods in communication steps of a tenth of a period: x against the closed form. */
@@ -166,6 +173,41 @@ static void check_passing(hg_method method, double tol)
     CHECK(passing > 0 && passing < exact / 2);
 }
 
+/* BDF limited to order 2 (max_order): the closed form within its tolerance, in more steps than
+ * at the method's own highest order on this smooth solution; an order beyond the method's is an
+ * error naming the call. */
+static long bdf_steps(int max_order)
+{
+    oscillator o = {2.0 * HG_PI * 5.0, 0.03};
+    double T = 2.0 * HG_PI / o.w, t = 0.0, y[2];
+    char err[256] = "";
+    hg_solver *s = make_order(HG_METHOD_BDF, &o, 0, 0.0, max_order);
+    long steps = 0, evals = 0;
+    int k;
+    if (!s) return 0;
+    for (k = 1; k <= 20; k++) {
+        CHECK(hg_solver_advance(s, k * T / 10.0, 1, &t, y, NULL, err, sizeof err) ==
+              HG_ADVANCE_REACHED);
+        CHECK_CLOSE(y[0], x_exact(&o, t), 0.0, 1e-6);
+    }
+    hg_solver_stats(s, &steps, &evals);
+    hg_solver_free(s);
+    return steps;
+}
+
+static void check_max_order(void)
+{
+    oscillator o = {1.0, 0.0};
+    const double atol[2] = {1e-12, 1e-12};
+    char err[256] = "";
+    hg_solver_options opt = {HG_METHOD_BDF, 1e-10, NULL, 1000, 6};
+    long own = bdf_steps(0), second = bdf_steps(2);
+    CHECK(own > 0 && second > 2 * own);
+    opt.atol = atol;
+    CHECK(hg_solver_new(2, 0, rhs, NULL, &o, &opt, err, sizeof err) == NULL);
+    CHECK(strstr(err, "CVodeSetMaxOrd failed") != NULL);
+}
+
 /* A bad step names the method and the reason. */
 static void check_errors(void)
 {
@@ -196,6 +238,7 @@ int main(void)
         check_roots(methods[i], 0.05, tol[i] / 100.0);
     }
     check_passing(HG_METHOD_BDF, tol[0]);
+    check_max_order();
     check_passing(HG_METHOD_ADAMS, tol[1]);
     check_passing(HG_METHOD_ERK, tol[0]);
     check_newmark_discrete();
