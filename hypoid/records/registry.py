@@ -51,6 +51,10 @@ RECORDS = {r.name: r for r in [
            "the full model with the one-series and the loaded tooth data at five operating "
            "points: real-time factor, steps, right-hand sides and CPU per mesh cycle",
            ("tooth-data-cost.json",), "python bench/tooth_data_cost.py", R + "pages:tables_page"),
+    Record("rigid-speed", "The rigid level's speed sweep",
+           "the rigid level against the full level from 500 to 6000 rpm in one run per speed: "
+           "real-time factor, solver steps and CPU per mesh cycle",
+           ("rigid-speed.json",), "python bench/rigid_speed.py", R + "pages:tables_page"),
     Record("paper-findings", "The paper's findings in this FMU",
            "the default and full studies' verdicts on the paper's findings, the resonances, the "
            "modal analysis, the what-if inertia, the loaded tooth data's sweep",
