@@ -22,12 +22,19 @@ typedef struct {
 
 typedef char header_is_64_bytes[sizeof(header) == 64 ? 1 : -1];
 
+/* FNV-1a 64 over the bytes taken as little-endian 64-bit words (the tail byte by byte): each
+ * step is a bijection of the state, so any one changed word changes the sum; eight times faster
+ * than byte by byte, which matters for the phase tables' megabyte. */
 static uint64_t checksum(const void *data, size_t n)
 {
     const unsigned char *p = data;
-    uint64_t h = 0xcbf29ce484222325ULL;
+    uint64_t h = 0xcbf29ce484222325ULL, w;
     size_t k;
-    for (k = 0; k < n; k++) h = (h ^ p[k]) * 0x100000001b3ULL; /* FNV-1a 64 */
+    for (k = 0; k + 8 <= n; k += 8) {
+        memcpy(&w, p + k, 8); /* the reader is little-endian (the header's order mark) */
+        h = (h ^ w) * 0x100000001b3ULL;
+    }
+    for (; k < n; k++) h = (h ^ p[k]) * 0x100000001b3ULL;
     return h;
 }
 

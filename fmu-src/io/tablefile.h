@@ -8,8 +8,8 @@
  *   0x0102030405060708 (uint64) and -1.5 (IEEE 754 binary64): the reader's byte order and double
  *   layout must give the same bytes (both platforms the FMU ships, x86_64 Linux and Windows, are
  *   little-endian IEEE 754),
- *   the table's 128-bit content key (two uint64), its size in bytes (uint64), and the FNV-1a 64
- *   checksum of its bytes (uint64).
+ *   the table's 128-bit content key (two uint64), its size in bytes (uint64), and the checksum
+ *   of its bytes (uint64: FNV-1a 64 over them as little-endian 64-bit words, the tail bytewise).
  * A reader never trusts a file: a missing, short, long, foreign or corrupted file, or one whose
  * key or size is not the one asked for, is refused and the caller computes the table. */
 #ifndef HG_TABLEFILE_H

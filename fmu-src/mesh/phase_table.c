@@ -20,9 +20,9 @@ static void node(const hg_series *y, const hg_harmonics *h, double w, double out
     out[1] = hg_series_slope(y, h) * w;
 }
 
-static void build_one(hg_phase_table *t, const hg_gearset *g, const hg_flank_series *s)
+void hg_phase_table_build(hg_phase_table *t, const hg_gearset *g, int fl, int lv)
 {
-    const hg_series *y = s->y;
+    const hg_series *y = g->s[fl][lv].y;
     const hg_series *mesh[HG_PT_N_MESH_CH] = {&y[HG_S_K_M], &y[HG_S_R_P], &g->e_0};
     const hg_series *pair[HG_PT_N_PAIR_CH] = {&y[HG_S_LS],   &y[HG_S_UP_X], &y[HG_S_UP_Y],
                                               &y[HG_S_UG_X], &y[HG_S_UG_Y], &y[HG_S_R_X],
@@ -77,7 +77,19 @@ static void build_levels(hg_pt_levels *K, const hg_phase_tables *ts, int fl)
     }
 }
 
+static int build_here(hg_phase_table *t, int fl, int lv, void *gear)
+{
+    hg_phase_table_build(t, gear, fl, lv);
+    return 0;
+}
+
 int hg_phase_tables_build(hg_phase_tables *ts, const hg_gearset *g)
+{
+    return hg_phase_tables_build_with(ts, g, build_here, (void *)g);
+}
+
+int hg_phase_tables_build_with(hg_phase_tables *ts, const hg_gearset *g, hg_pt_one_fn one,
+                               void *ctx)
 {
     int fl, lv, n = g->n_flanks * g->n_levels, layered = g->n_levels > 1;
     if (ts->n_flanks * ts->n_levels != n || ts->n_flanks != g->n_flanks) {
@@ -92,7 +104,10 @@ int hg_phase_tables_build(hg_phase_tables *ts, const hg_gearset *g)
     ts->n_levels = g->n_levels;
     for (fl = 0; fl < g->n_flanks; fl++)
         for (lv = 0; lv < g->n_levels; lv++)
-            build_one(&ts->t[fl * g->n_levels + lv], g, &g->s[fl][lv]);
+            if (one(&ts->t[fl * g->n_levels + lv], fl, lv, ctx)) {
+                hg_phase_tables_free(ts);
+                return -1;
+            }
     for (fl = 0; fl < g->n_flanks && layered; fl++) {
         hg_mesh_law_levels_of(g, fl, &ts->law[fl]);
         build_levels(&ts->k_levels[fl], ts, fl);

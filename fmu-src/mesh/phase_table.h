@@ -66,6 +66,17 @@ typedef struct {
 /* Tabulates every series of g (after scaling) into ts, which must be zeroed or built before; -1
  * when out of memory (ts then holds none). */
 int hg_phase_tables_build(hg_phase_tables *ts, const hg_gearset *g);
+
+/* The table of flank fl and torque level lv of g alone (plain bytes: what hg_phase_tables_build
+ * puts at t[fl * n_levels + lv]). */
+void hg_phase_table_build(hg_phase_table *t, const hg_gearset *g, int fl, int lv);
+
+/* As hg_phase_tables_build, each flank's and level's table made by one(t, fl, lv, ctx), which
+ * must give hg_phase_table_build's bytes (the model takes them from its table store); -1 when
+ * out of memory or one fails (ts then holds none). */
+typedef int (*hg_pt_one_fn)(hg_phase_table *t, int fl, int lv, void *ctx);
+int hg_phase_tables_build_with(hg_phase_tables *ts, const hg_gearset *g, hg_pt_one_fn one,
+                               void *ctx);
 void hg_phase_tables_free(hg_phase_tables *ts);
 
 void hg_phase_table_locate(double theta, hg_pt_cell *c);

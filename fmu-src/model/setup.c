@@ -96,9 +96,40 @@ static int load_failed(const data_file *f, const char *why, char *err, size_t er
     return -1;
 }
 
-static int build_phase_tables(void *table, void *gear)
+/* The phase tables of a gear set (after scaling), for the store: each flank's and level's table
+ * is an entry of plain bytes of its own, so that the FMU can ship it (hg_store_get_shipped),
+ * copied into the set. */
+typedef struct {
+    const char *resource_dir;
+    const hg_gearset *gear;
+    hg_store_id id; /* the set's */
+    int fl, lv;
+} phase_job;
+
+static int build_phase_table(void *table, void *ctx)
 {
-    return hg_phase_tables_build(table, gear);
+    const phase_job *j = ctx;
+    hg_phase_table_build(table, j->gear, j->fl, j->lv);
+    return 0;
+}
+
+static int phase_table_of_store(hg_phase_table *t, int fl, int lv, void *ctx)
+{
+    phase_job *j = ctx;
+    const hg_phase_table *held;
+    hg_store_id id = hg_store_hash(hg_store_hash(j->id, &fl, sizeof fl), &lv, sizeof lv);
+    j->fl = fl, j->lv = lv;
+    held = hg_store_get_shipped(j->resource_dir, id, sizeof *held, build_phase_table, j, NULL);
+    if (!held) return -1; /* out of memory */
+    memcpy(t, held, sizeof *t);
+    hg_store_put(held);
+    return 0;
+}
+
+static int build_phase_tables(void *table, void *ctx)
+{
+    phase_job *j = ctx;
+    return hg_phase_tables_build_with(table, j->gear, phase_table_of_store, j);
 }
 
 static void free_phase_tables(void *table)
@@ -144,15 +175,16 @@ static int load_gearset(hg_setup *s, const char *resource_dir, const hg_vars *v,
     data_file f = gearset_file(v);
     char why[HG_ERRLEN] = "";
     const hg_phase_tables *held;
+    phase_job job;
     if (resolve(&f, resource_dir, err, errlen)) return -1;
     if (gearset_of_file(resource_dir, f.path, &s->gear, why, sizeof why))
         return load_failed(&f, why, err, errlen);
     hg_gearset_scale(&s->gear, v->k_m_scale, v->e_0_scale);
     held = s->phase;
-    s->phase = hg_store_get(hg_store_hash(hg_store_id_of("phase tables"), &s->gear,
-                                          sizeof s->gear),
-                            sizeof *s->phase, build_phase_tables, &s->gear, free_phase_tables,
-                            NULL);
+    job.resource_dir = resource_dir, job.gear = &s->gear, job.fl = job.lv = 0;
+    job.id = hg_store_hash(hg_store_id_of("phase tables"), &s->gear, sizeof s->gear);
+    s->phase = hg_store_get(job.id, sizeof *s->phase, build_phase_tables, &job,
+                            free_phase_tables, NULL);
     hg_store_put(held); /* after: the same gear set finds the tables it held */
     if (!s->phase) {
         hg_errorf(err, errlen, "out of memory for the tables of %s", s->gear.name);
