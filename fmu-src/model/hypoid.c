@@ -117,6 +117,7 @@ static int make_solver(hg_model *m, char *err, size_t errlen)
     opt.atol = m->s.atol;
     opt.max_steps = MAX_SOLVER_STEPS;
     opt.max_order = m->s.max_order;
+    opt.jac_every = m->s.jac_every;
     hg_solver_free(m->solver);
     m->solver = hg_solver_new(m->s.n_active, HG_STEPPING_N_ROOTS, rhs, roots, m, &opt, err,
                               errlen);

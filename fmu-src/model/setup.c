@@ -425,6 +425,16 @@ static int bdf_max_order(const hg_dyn_params *p, int solver)
                : 0;
 }
 
+/* Most steps between Jacobian evaluations: 1000 for the rigid mesh, whose Jacobian is the shafts'
+ * and the governor's constant one but for the friction's slow drift, so that one serves Newton
+ * for many steps (CVODE evaluates a new one whenever Newton fails to converge; the error test is
+ * the same). CVODE's own 51 steps spent a fifth of the right-hand sides on finite-difference
+ * Jacobians at 500 rpm. Elsewhere CVODE's own (0): the mesh stiffness varies along the cycle. */
+static long jac_every(const hg_dyn_params *p)
+{
+    return p->mesh == HG_MESH_MODEL_RIGID ? 1000 : 0;
+}
+
 /* Absolute tolerances: atol is on the DTE [m]; angles scale by 1/R, speeds by omega_4/R. */
 static void tolerances(hg_setup *s, const hg_vars *v)
 {
@@ -448,6 +458,7 @@ static void tolerances(hg_setup *s, const hg_vars *v)
     s->fixed_step = s->solver == HG_SOLVER_NEWMARK;
     s->explicit_rk = s->solver == HG_SOLVER_ARKODE_ERK;
     s->max_order = bdf_max_order(&s->p, s->solver);
+    s->jac_every = jac_every(&s->p);
     s->max_step = v->max_step;
     s->f_max = v->f_4;
     s->steps_per_mesh = s->fixed_step ? v->steps_per_mesh_cycle : STEPS_PER_MESH;

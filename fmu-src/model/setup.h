@@ -30,6 +30,7 @@ typedef struct {
     int fixed_step;       /* the solver takes fixed steps (newmark) */
     int explicit_rk;      /* arkode_erk: stability-bounded steps, no automatic max_step */
     int max_order;        /* highest order of CVODE's BDF (0: its own, 5); see bdf_max_order */
+    long jac_every;       /* most steps between CVODE's Jacobians (0: its own); see jac_every */
     double f_max;         /* highest natural frequency of the linearised system [Hz] */
     double window_angle;  /* pinion angle of one averaging window [rad] */
 } hg_setup;

@@ -21,6 +21,8 @@ typedef struct {
     const double *atol; /* one per state */
     long max_steps;     /* internal steps allowed per hg_solver_advance call */
     int max_order;      /* highest order of the multistep methods (0: the method's own) */
+    long jac_every;     /* most steps between Jacobian evaluations of CVODE's Newton iteration
+                           (0: CVODE's own, 51); it also evaluates one when Newton fails */
 } hg_solver_options;
 
 typedef struct hg_solver hg_solver;

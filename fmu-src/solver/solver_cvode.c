@@ -31,6 +31,7 @@ static int configure(hg_sun *b, cvode_solver *s, const hg_solver_options *opt, c
     HG_SUN_CALL(b, CVodeSetStabLimDet, (b->mem, opt->method == HG_METHOD_BDF));
     if (opt->max_order > 0) HG_SUN_CALL(b, CVodeSetMaxOrd, (b->mem, opt->max_order));
     HG_SUN_CALL(b, CVodeSetLinearSolver, (b->mem, s->LS, s->A));
+    if (opt->jac_every > 0) HG_SUN_CALL(b, CVodeSetJacEvalFrequency, (b->mem, opt->jac_every));
     if (b->pb.n_roots > 0) HG_SUN_CALL(b, CVodeRootInit, (b->mem, b->pb.n_roots, hg_sun_roots));
     return 0;
 }

@@ -63,6 +63,7 @@ static hg_solver *make_order(hg_method method, oscillator *o, int n_roots, doubl
     opt.atol = atol;
     opt.max_steps = 1000000;
     opt.max_order = max_order;
+    opt.jac_every = 0;
     s = hg_solver_new(2, n_roots, rhs, n_roots ? root_x : NULL, o, &opt, err, sizeof err);
     CHECK(s != NULL);
     if (!s) {
@@ -200,7 +201,7 @@ static void check_max_order(void)
     oscillator o = {1.0, 0.0};
     const double atol[2] = {1e-12, 1e-12};
     char err[256] = "";
-    hg_solver_options opt = {HG_METHOD_BDF, 1e-10, NULL, 1000, 6};
+    hg_solver_options opt = {HG_METHOD_BDF, 1e-10, NULL, 1000, 6, 0};
     long own = bdf_steps(0), second = bdf_steps(2);
     CHECK(own > 0 && second > 2 * own);
     opt.atol = atol;
