@@ -55,6 +55,10 @@ RECORDS = {r.name: r for r in [
            "the rigid level against the full level from 500 to 6000 rpm in one run per speed: "
            "real-time factor, solver steps and CPU per mesh cycle",
            ("rigid-speed.json",), "python bench/rigid_speed.py", R + "pages:tables_page"),
+    Record("startup", "The start of an instance",
+           "the full level's first instance of a process and further instances: CPU from "
+           "instantiation to 10 ms, memory each, with and without the shipped tables; the "
+           "FMU's size", ("startup.json",), "python bench/startup.py", R + "pages:tables_page"),
     Record("paper-findings", "The paper's findings in this FMU",
            "the default and full studies' verdicts on the paper's findings, the resonances, the "
            "modal analysis, the what-if inertia, the loaded tooth data's sweep",
