@@ -14,6 +14,7 @@
 #define RHO_EXPANSION 7e-4 /* volumetric expansion of gear oils [1/K] (assumed, docs/axle.md) */
 #define T_15C 288.15
 #define T_40C 313.15       /* Linke's reference viscosity [K] */
+#define NU_40_LINKE_MIN 0.2e-6 /* lg lg(nu_40 + 0.8) exists for nu_40 > 0.2 mm^2/s [m^2/s] */
 #define T_PRELOAD 293.15   /* the workshop sets the preloads at 20 degC [K] */
 #define ALPHA_STEEL 11.5e-6 /* thermal expansion of the steel shaft and bearings [1/K] (docs/axle.md) */
 #define Y0_PER_Y 0.55      /* ISO 76: Y_0 = 0.22 cot(alpha), Y = 0.4 cot(alpha) for tapered rollers */
@@ -179,6 +180,12 @@ int hg_ledger_setup(hg_ledger *a, const hg_vars *v, int gear_set_builtin,
     a->d_seal_p = v->d_seal_p;
     a->d_seal_w = v->d_seal_w;
     a->nu_40 = hg_ledger_nu(lub, T_40C);
+    if (a->seal_linke && !(a->nu_40 > NU_40_LINKE_MIN)) {
+        hg_errorf(err, errlen, "seal_model = linke: the lubricant's kinematic viscosity at 40 degC, "
+                  "%g mm^2/s, lies outside Linke's seal law (lg lg(nu_40 + 0.8) needs nu_40 > "
+                  "0.2 mm^2/s); set seal_model = iso14179", a->nu_40 * 1e6);
+        return -1;
+    }
     return 0;
 }
 

@@ -335,6 +335,21 @@ def test_impossible_axle_geometry_is_refused(harness, values, words):
         assert w in text
 
 
+def test_linke_seals_refuse_an_oil_outside_their_law(harness, tmp_path):
+    """Linke's lg lg(nu_40 + 0.8) needs nu_40 > 0.2 mm^2/s: an oil of a thousandth the default's
+    viscosity (0.1 mm^2/s at 40 degC) is refused naming seal_model and the viscosity; with
+    seal_model = iso14179 it runs."""
+    src = (ROOT / "resources" / "lubricants" / "OS265962.txt").read_text()
+    a = lubricant()["vogel_a"]
+    thin = tmp_path / "thin.txt"
+    thin.write_text(src.replace(f"vogel_a {a!r}", f"vogel_a {a * 1e-3!r}"))
+    assert thin.read_text() != src
+    text = refused_at_init(harness, axle_losses=FULL, lubricant_file=str(thin))
+    assert "seal_model" in text and "mm^2/s" in text and "0.100" in text, text
+    harness().start(dict(axle_losses=FULL, lubricant_file=str(thin), seal_model=2),
+                    checked=False)
+
+
 @pytest.mark.parametrize("name, value", [("C_sump", 0.0), ("C_sump", -5.0), ("V_oil", 0.0),
                                          ("V_oil", -1e-3), ("h_housing", -1.0),
                                          ("oil_level", -0.01), ("brg_ph_d", 0.0),
