@@ -103,3 +103,35 @@ def study_time(record, folder, _old=None):
                       table(["quantity [s]", "median", "each run"], rows), "",
                       "The last run's sweeps and slowest points:", "", sweeps, "",
                       "; ".join(last["slowest_points"]) + "."]) + "\n"
+
+
+def cost(record, folder, _old=None):
+    """The drive-cycle cost table: level x cycle x start, CPU, real-time factor, the axle's cycle
+    loss and its error against the full level at the same cycle and start."""
+    d = load(folder, record.data[0])
+    m = d["machine"]
+    rows = []
+    for c in d["cells"]:
+        err = f"{100 * c['loss_error_vs_full']:+.2f} %" if "loss_error_vs_full" in c else "–"
+        rows.append([c["cycle"], f"{c['start']} (oil {c['T_oil0_degC']:g} °C, air "
+                     f"{c['T_amb_degC']:g} °C)", c["level"], f"{c['cpu_s']:.2f}",
+                     str(c["repeats"]) + ("" if c["repeats_identical"] else " (losses differ)"),
+                     f"{c['real_time_factor_cpu']:.1f}x", f"{c['axle_loss_J'] / 1e3:.2f}", err])
+    spans = ", ".join(f"{k} {v:.0f} s" for k, v in d["cycles"].items()) or \
+        f"each cycle's first {d['until_s']:g} s"
+    reps = ", ".join(f"{k} {v}" for k, v in d["repeats"].items())
+    loads = " → ".join("/".join(f"{x:.2f}" for x in m[k])
+                       for k in ("load_average_before", "load_average_after"))
+    text = (f"`{d['command']}`, recorded on {d['commit']}, {d['recorded']}: the gear and vehicle "
+            f"FMUs in `hypoid drive-cycle`'s co-simulation (fmpy master, {d['step_s']:g} s "
+            f"steps) over {spans}. CPU is the process's (both FMUs and the Python master), the "
+            f"median of the runs of a cell (runs per cell: {reps}; the full level's figure is "
+            "one run); the real-time factor is the cycle's duration over that CPU; the error is "
+            "the axle's cycle loss against the full level's at the same cycle and start. "
+            f"Machine: {m['cpus']} CPUs ({m['processor']}), {m['shared']}, niceness "
+            f"{m['niceness']}; load average (1/5/15 min) at the start → the end: {loads}; "
+            f"{d['wall_total_s'] / 60:.0f} min in all. Each run's CPU, wall time and load "
+            "average are in the data.")
+    return "\n".join([head(record), text, "",
+                      table(["cycle", "start", "level", "CPU [s]", "runs", "real-time factor "
+                             "(CPU)", "axle loss [kJ]", "against full"], rows)]) + "\n"

@@ -98,6 +98,11 @@ RECORDS = {r.name: r for r in [
            "rm -rf build/records/wltc3 && hypoid drive-cycle --level fast --out build/records "
            "--name wltc3 && python bench/drive_cycle.py --summary build/records/wltc3 && "
            "python bench/drive_cycle.py", R + "drive_cycle:page"),
+    Record("drive-cycle-cost", "What a drive cycle costs at each level",
+           "CPU, real-time factor and the axle's cycle loss against the full level of the map, "
+           "fast and full levels over WLTC class 3b and US06 from -7 and 20 °C and warm",
+           ("drive-cycle-cost.json",), "python bench/drive_cycle_cost.py",
+           R + "drive_cycle:cost"),
     Record("study-time", "What the default study costs",
            "wall and CPU time of `hypoid study default` and of its kinds of task",
            ("study-time.json",), "python bench/study_time.py", R + "drive_cycle:study_time"),
