@@ -2,6 +2,8 @@
  * operations themselves are sun_common.c's over the table API below. */
 #include "solver/sun_common.h"
 
+#include "solver/block_dense.h"
+
 #include <cvode/cvode.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,8 +47,8 @@ static int make(hg_sun *b, const hg_solver_options *opt, char *err, size_t errle
         return hg_sun_fail_new("CVODE", err, errlen, "CVodeCreate");
     if (!(s->A = SUNDenseMatrix(n, n, b->ctx)))
         return hg_sun_fail_new("CVODE", err, errlen, "SUNDenseMatrix");
-    if (!(s->LS = SUNLinSol_Dense(b->y, s->A, b->ctx)))
-        return hg_sun_fail_new("CVODE", err, errlen, "SUNLinSol_Dense");
+    if (!(s->LS = hg_block_dense_new(b->y, s->A, b->ctx)))
+        return hg_sun_fail_new("CVODE", err, errlen, "hg_block_dense_new");
     return configure(b, s, opt, err, errlen);
 }
 
