@@ -37,6 +37,7 @@ sys.path.insert(0, str(ROOT))
 
 import coupling_master as cm  # noqa: E402
 from hypoid.cosim import ecos, libcosim  # noqa: E402
+from hypoid.cosim.host import intenum_fmu  # noqa: E402
 
 # host: (its run, why it does not load here); the outside hosts run the Jacobi master only
 HOSTS = {"fmpy": None,
@@ -139,7 +140,7 @@ def main():
             print(f"coupling_matrix: {host} is not usable here ({why}): left out", file=sys.stderr)
         else:
             hosts.append(host)
-    gear_intenum = libcosim.intenum_fmu(args.gear) if set(hosts) - {"fmpy"} else None
+    gear_intenum = intenum_fmu(args.gear, "libcosim and Ecos") if set(hosts) - {"fmpy"} else None
     rows = []
     for name in args.scenes:
         scene = cm.SCENES[name]

@@ -9,9 +9,10 @@ half-shaft compliance (k_t2 = k_hs); the vehicle FMU (LongitudinalVehicle.fmu, c
 2) returns the road load and the brake torque at the wheel speed; a driver (a PI speed
 controller with feed-forward of the cycle's acceleration) sets the propeller-shaft torque T_s
 and the brakes. Both FMUs run in fmpy's co-simulation master (Jacobi, communication step
---step) or, with --master libcosim, in libcosim's fixed-step algorithm (libcosimpy; the build's
-integer-coded gear FMU). The car is the vehicle FMU's by name: --set m=1800 CdA=0.68 (any of its
-parameters; the rest of --set goes to the gear FMU, e.g. the driveline inertias I_s=0.08) or a
+--step) or, with --master libcosim or ecos, in libcosim's or Ecos' fixed-step algorithm
+(libcosimpy or ecospy, test extras; the build's integer-coded gear FMU). The car is the vehicle
+FMU's by name: --set m=1800 CdA=0.68 (any of its parameters; the rest of --set goes to the gear
+FMU, e.g. the driveline inertias I_s=0.08) or a
 vehicle file (--vehicle my_car.toml: the vehicle's parameters, the driveline's inertias, the
 engine's drag map for engine braking, the air pressure; hypoid/drivecycle/vehicle.py describes
 it); the air density follows the air temperature (--t-amb) unless rho_air is given.
@@ -78,8 +79,9 @@ def _parser():
                     help="oil at the start of the warm run in degC (80)")
     ap.add_argument("--no-warm", action="store_true", help="only the cold start")
     ap.add_argument("--master", choices=sorted(MASTERS), default="fmpy",
-                    help="co-simulation master: fmpy (default) or libcosim (libcosimpy, with "
-                         "the build's integer-coded gear FMU)")
+                    help="co-simulation master: fmpy (default), libcosim (libcosimpy) or ecos "
+                         "(ecospy); the last two with the build's integer-coded gear FMU and "
+                         "the inputs held over each step")
     ap.add_argument("--until", type=float,
                     help="stop after this many seconds of the cycle (default: the whole cycle)")
     ap.add_argument("--out", type=user_path, default=user_path("results"),

@@ -7,12 +7,13 @@ host (tests/cosim/coupling_master.py, run_host).
 
 What Ecos 0.7 leaves to its caller, and this driver does:
 - it ignores Enumeration variables, as libcosim does: give it the integer-coded gear FMU the
-  build writes (hypoid.cosim.libcosim.intenum_fmu); a start value or a read of a variable it
+  build writes (hypoid.cosim.host.intenum_fmu); a start value or a read of a variable it
   cannot reach is refused here by name (Ecos logs a warning and goes on);
 - it ignores the status of fmi2SetReal and fmi2DoStep: an input that an FMU refuses (out of its
   range) leaves the FMU with its old value, and the run goes on. Each connection here records
-  what it passes (an Ecos modifier that returns its argument), and step() reads every connected
-  input back and raises when an FMU did not take the value it was sent.
+  what it passes (an Ecos modifier that returns its argument), set_reals what it sets, and
+  step() reads every such input back and raises hypoid.fmu.instance.FmuError naming the input
+  when an FMU did not take the value it was sent.
 
 Ecos reads outputs after the connections' transfer: an output with direct feedthrough (the
 vehicle's T_hs in its half-shaft coupling 1) reads as its value with the new inputs, not the one
@@ -25,6 +26,7 @@ import pathlib
 
 from hypoid.cosim import host
 from hypoid.errors import UsageError
+from hypoid.fmu.instance import FmuError
 
 _CASTS = {"Real": float, "Integer": int, "Boolean": bool, "String": str}
 
@@ -46,7 +48,7 @@ class Execution:
     around once per model, as Ecos does) at the first set_reals, step or reals: the outputs
     of the start are readable before the first step."""
 
-    outputs_at_start = True
+    host, outputs_at_start, reads_after_transfer = "Ecos", True, True
 
     def __init__(self, h):
         host.require("Ecos", why_unavailable, "pip install ecospy==0.7.2; on Linux it needs "
@@ -100,27 +102,31 @@ class Execution:
             self.sim = EcosSimulation(step_size=self.h, structure=self.structure)
             if not self.sim.init(0.0, "start" if self.start else None):
                 raise RuntimeError(f"Ecos could not initialise: {EcosLib.get_last_error()}")
-            self._check_links("initialisation")
+            self._check_inputs("initialisation")
         return self.sim
 
     def set_reals(self, name, names, values):
-        """Real inputs for the next step (and after it, until set again)."""
+        """Real inputs for the next step (and after it, until set again); checked after it."""
         sim = self._simulation()
         for var, value in zip(names, values):
-            sim.set_real(self.ref(name, var), float(value))
+            ref = self.ref(name, var)
+            self.sent[ref] = float(value)
+            sim.set_real(ref, self.sent[ref])
 
     def step(self):
         sim = self._simulation()
         t = sim.get_time()
         sim.step()
-        self._check_links(f"the step from t = {t:.6g} s")
+        self._check_inputs(f"the step from t = {t:.6g} s")
 
-    def _check_links(self, when):
+    def _check_inputs(self, when):
+        """Every input passed by a connection or set: the value sent, else FmuError."""
         for sink, sent in self.sent.items():
             held = self.sim.get_real(sink)
             if held != sent:
-                raise RuntimeError(f"Ecos: after {when} {sink} = {held!r}, not the {sent!r} it "
-                                   "was sent: the FMU refused it (Ecos goes on regardless)")
+                raise FmuError(f"Ecos: after {when} {sink} = {held!r}, not the {sent!r} it was "
+                               "sent: the FMU refused it (Ecos goes on regardless)",
+                               "fmi2SetReal")
 
     def reals(self, name, refs):
         """The values of the Real variables with these identifiers (ref()) after the last step."""

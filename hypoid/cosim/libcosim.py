@@ -5,8 +5,6 @@ after it. libcosim 0.11 ignores Enumeration variables: give it the build's integ
 FMU (`<name>_intenum.fmu`, the enumerations as Integers with the same codes), see
 docs/integration.md."""
 
-import pathlib
-
 from hypoid.cosim import host
 from hypoid.errors import UsageError
 
@@ -22,16 +20,6 @@ def why_unavailable():
     return host.why_not(_load)
 
 
-def intenum_fmu(fmu):
-    """The integer-coded variant that the build writes next to the FMU."""
-    fmu = pathlib.Path(fmu)
-    path = fmu.with_name(f"{fmu.stem}_intenum.fmu")
-    if not path.exists():
-        raise UsageError(f"{path} is missing: libcosim needs the integer-coded FMU the build "
-                         "writes next to the FMU")
-    return path
-
-
 def step_ns(h):
     """libcosim counts time in whole nanoseconds."""
     ns = int(round(h * 1e9))
@@ -45,7 +33,7 @@ class Execution:
     observer. libcosim initialises the FMUs inside the first step (its C API has no separate
     call), so outputs are readable after a step only."""
 
-    outputs_at_start = False
+    host, outputs_at_start, reads_after_transfer = "libcosim", False, False
 
     def __init__(self, h):
         host.require("libcosim", why_unavailable, "pip install libcosimpy==0.0.6 (Linux x86_64)")
@@ -154,46 +142,21 @@ class Execution:
             self.__dict__.pop(attr, None)
 
 
-class GearVehicle:
-    """hypoid.cosim.master.GearVehicle's scene in libcosim's fixed-step (Jacobi) algorithm, with
-    the integer-coded gear FMU: T_hs -> T_w and w_w -> w_w are libcosim connections, the callers'
-    inputs go in through the override manipulator before each step. `record` = n keeps every
-    output over steps 0 .. n-1 (series()); libcosim initialises inside the first step, so the
-    outputs of step() are those after it."""
+class GearVehicle(host.GearVehicle):
+    """hypoid.cosim.host.GearVehicle in libcosim. `record` = n keeps every output over steps
+    0 .. n-1 (series()); libcosim initialises inside the first step, so the outputs of step()
+    are those after it."""
 
     def __init__(self, gear_fmu, vehicle_fmu, gear_start, vehicle_start, h, gear_out,
                  vehicle_out, gear_inputs=("T_s",), vehicle_inputs=(), record=0):
-        from hypoid.fmu.values import TABLE
-
-        self.ex = Execution(h)
-        self.ex.add("gear", intenum_fmu(gear_fmu))
-        self.ex.add("vehicle", vehicle_fmu)
-        self.ex.initial("gear", {var.name: x for var, x in TABLE.fmu_values(gear_start)})
-        self.ex.initial("vehicle", vehicle_start)
-        self.ex.connect("vehicle", "T_hs", "gear", "T_w")
-        self.ex.connect("gear", "w_w", "vehicle", "w_w")
-        self.gear_out, self.vehicle_out = list(gear_out), list(vehicle_out)
-        self.g_refs = [self.ex.ref("gear", x) for x in gear_out]
-        self.v_refs = [self.ex.ref("vehicle", x) for x in vehicle_out]
-        self.gear_inputs, self.vehicle_inputs = list(gear_inputs), list(vehicle_inputs)
+        super().__init__(Execution, gear_fmu, vehicle_fmu, gear_start, vehicle_start, h,
+                         gear_out, vehicle_out, gear_inputs, vehicle_inputs)
         self.n_record = record
         if record:
             self.ex.record({"gear": gear_out, "vehicle": vehicle_out}, record)
-
-    def step(self, t=None, h=None, gear_inputs=(), vehicle_inputs=()):
-        """One step of the execution's own size (t and h as the fmpy master takes them, unused)."""
-        if self.gear_inputs:
-            self.ex.set_reals("gear", self.gear_inputs, gear_inputs)
-        if self.vehicle_inputs:
-            self.ex.set_reals("vehicle", self.vehicle_inputs, vehicle_inputs)
-        self.ex.step()
-        return self.ex.reals("gear", self.g_refs), self.ex.reals("vehicle", self.v_refs)
 
     def series(self):
         """(times in s, {gear output: values}, {vehicle output: values}) of the recorded steps."""
         gear = {x: self.ex.series("gear", x, self.n_record)[0] for x in self.gear_out}
         vehicle = {x: self.ex.series("vehicle", x, self.n_record)[0] for x in self.vehicle_out}
         return self.ex.series("gear", self.gear_out[0], self.n_record)[1], gear, vehicle
-
-    def close(self):
-        self.ex.close()

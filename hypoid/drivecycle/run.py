@@ -2,8 +2,9 @@
 sump) carries the vehicle's inertia at its wheel end (I_w += m r^2 + J_wheels) and the half-shaft
 compliance (k_t2 = k_hs); the vehicle FMU (coupling = 2) returns the road load and the brake
 torque at the wheel speed; the driver sets the propeller-shaft torque T_s and the brakes. Both
-FMUs run in the package's co-simulation master (hypoid.cosim.master, fmpy, Jacobi) or in
-libcosim's (hypoid.cosim.libcosim, with the build's integer-coded gear FMU)."""
+FMUs run in the package's co-simulation master (hypoid.cosim.master, fmpy, Jacobi) or in an
+outside host's fixed-step algorithm, libcosim's or Ecos' (hypoid.cosim.host.GearVehicle, with the
+build's integer-coded gear FMU)."""
 
 import os
 import sys
@@ -12,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from hypoid.cosim import libcosim, master
+from hypoid.cosim import ecos, host, libcosim, master
 from hypoid.drivecycle.levels import LEVELS
 from hypoid.drivecycle.vehicle import Driver, Vehicle, fmu_parameters
 from hypoid.fmu.values import TABLE
@@ -71,12 +72,16 @@ def fmpy_master(gear_fmu, vehicle_fmu, gear_values, vehicle_values, h, w_rest=0.
                               ramp=ramp)
 
 
-def libcosim_master(gear_fmu, vehicle_fmu, gear_values, vehicle_values, h):
-    return libcosim.GearVehicle(gear_fmu, vehicle_fmu, gear_values, vehicle_values, h, GEAR_OUT,
-                                VEHICLE_OUT, GEAR_INPUTS, VEHICLE_INPUTS)
+def hosted(Execution):
+    """The master of an outside host (Execution: its driver's class)."""
+    def make(gear_fmu, vehicle_fmu, gear_values, vehicle_values, h):
+        return host.GearVehicle(Execution, gear_fmu, vehicle_fmu, gear_values, vehicle_values, h,
+                                GEAR_OUT, VEHICLE_OUT, GEAR_INPUTS, VEHICLE_INPUTS)
+    return make
 
 
-MASTERS = {"fmpy": fmpy_master, "libcosim": libcosim_master}
+MASTERS = {"fmpy": fmpy_master, "libcosim": hosted(libcosim.Execution),
+           "ecos": hosted(ecos.Execution)}
 I_V, I_WP = VEHICLE_OUT.index("v"), GEAR_OUT.index("w_p")
 DRIVELINE_RECORD = ("I_s", "I_p", "I_g", "I_w", "ratio", "k_t1", "k_t2")
 
@@ -93,9 +98,10 @@ def simulate(cycle, gear_fmu, vehicle_fmu, level, T_oil0, T_amb, h, extra, label
              vehicle=None, master="fmpy", until=None, ramp=True):
     """One co-simulation over the cycle (up to `until` s if given) in the named master; the
     recorded outputs at every communication point. The state at t = 0 and the driver's data
-    come from fmpy's initialisation in both masters: libcosim initialises inside its first
+    come from fmpy's initialisation in every master: libcosim initialises inside its first
     step and cannot be read before it. fmpy's master gives the gear its inputs as ramps
-    (hypoid.cosim.master.GearVehicle's `ramp`, unless ramp is False); libcosim holds them."""
+    (hypoid.cosim.master.GearVehicle's `ramp`, unless ramp is False); libcosim and Ecos hold
+    them."""
     vehicle = (vehicle or Vehicle()).for_air(T_amb, fmu_parameters(vehicle_fmu))
     wall = time.perf_counter()
     I_w0 = float(TABLE.variable("I_w").start)

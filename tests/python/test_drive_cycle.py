@@ -242,6 +242,71 @@ def test_libcosim_and_fmpy_masters_agree_on_the_axle_loss(tmp_path, capsys):
     assert got["T_oil_degC"]["end"] == pytest.approx(ref["T_oil_degC"]["end"], abs=1e-3)
 
 
+def need_ecos():
+    from hypoid.cosim import ecos
+
+    why = ecos.why_unavailable()
+    if why:
+        pytest.skip(f"Ecos (ecospy) is not usable here: {why}")
+
+
+ECOS_STEP = 0.0625  # s, a binary fraction: k h is exact, however the host adds up its time
+
+
+def test_ecos_runs_the_drive_cycle_as_the_fmpy_master(tmp_path, capsys):
+    """The first 30 s of WLTC class 3 (standing, launch, first peak) from a cold start at the
+    map level: `hypoid drive-cycle --master ecos` against fmpy's master with the inputs held
+    over each step, as Ecos holds them. Both are Jacobi with the same FMI calls and values on the
+    same binary (the gear's w_w goes to the vehicle before each step in both, host.GearVehicle),
+    so the runs are bit-identical (measured: every figure and row equal). The step is a binary
+    fraction: at 0.05 s Ecos' time, summed step by step, differs from the fmpy master's k h in
+    the last bits, which moves the gear FMU's adaptive steps (axle loss 2.2e-7 apart). The bound,
+    1e-12, leaves room for round-off only, where a value passed a step late or a start value lost
+    moves the axle loss by 1e-4 and more (the ramps' half-step delay: 1.9e-4)."""
+    need_ecos()
+    code, _, err = run_cli(["--master", "ecos", "--level", "map", "--step", str(ECOS_STEP),
+                            "--until", "30", "--no-warm", "--out", str(tmp_path),
+                            "--name", "ecos"], capsys)
+    assert code == 0, err
+    got = json.loads((tmp_path / "ecos" / "summary.json").read_text())
+    assert got["meta"]["master"] == "ecos"
+    cycle = cycles.builtin_cycle("wltc3")
+    run = runner.simulate(cycle, ROOT / "build" / "HypoidGearPair.fmu", VEHICLE_FMU, "map",
+                          293.15, 293.15, ECOS_STEP, {}, "cold", until=30.0, ramp=False)
+    (got,), ref = got["runs"], summary.summarise(run, cycle, ECOS_STEP)
+    assert ref["axle_loss_J"] > 1e3  # the launch is in the segment
+    assert got["axle_loss_J"] == pytest.approx(ref["axle_loss_J"], rel=1e-12)
+    for part, e in ref["axle_losses_J"].items():
+        assert got["axle_losses_J"][part] == pytest.approx(e, rel=1e-12), part
+    assert got["energy_into_axle_J"] == pytest.approx(ref["energy_into_axle_J"], rel=1e-12)
+    assert got["T_oil_degC"]["end"] == pytest.approx(ref["T_oil_degC"]["end"], rel=1e-12)
+
+
+def test_ecos_stops_naming_the_input_the_gear_refuses(tmp_path, capsys):
+    """Ecos goes on when an FMU refuses an input; the drive cycle stops after that step with one
+    line naming it. A 300 t car with a 100 kN m engine: the driver's launch torque exceeds the
+    gear FMU's T_s range (20 kN m), which the gear refuses."""
+    need_ecos()
+    car = tmp_path / "heavy.toml"
+    car.write_text("[vehicle]\nm = 3e5\n[engine]\nT_max_Nm = 1e5\n")
+    code, out, err = run_cli(["--master", "ecos", "--vehicle", str(car), "--until", "20",
+                              "--no-warm", "--out", str(tmp_path), "--name", "heavy"], capsys)
+    assert code == 2 and len(err.splitlines()) == 1, err
+    assert "gear::T_s" in err and "refused" in err and "unexpected" not in err
+    assert not (tmp_path / "heavy").exists()
+
+
+def test_an_unavailable_ecos_is_one_line(tmp_path, capsys, monkeypatch):
+    import sys
+
+    monkeypatch.setitem(sys.modules, "ecospy", None)  # the import fails as without the package
+    code, _, err = run_cli(["--master", "ecos", "--until", "1", "--no-warm",
+                            "--out", str(tmp_path), "--name", "none"], capsys)
+    assert code == 2 and len(err.splitlines()) == 1, err
+    assert "Ecos is not usable here" in err and "pip install ecospy" in err
+    assert not (tmp_path / "none").exists()
+
+
 def test_until_shorter_than_a_step_is_refused(tmp_path, capsys):
     code, _, err = run_cli(["--until", "0.01", "--out", str(tmp_path)], capsys)
     assert code == 2 and "--until" in err
