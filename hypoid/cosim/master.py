@@ -32,8 +32,11 @@ def _start(inst, values, name):
 
 def ramp_slope(a, b, h, lo=-math.inf, hi=math.inf):
     """The slope from a to b over h whose end a + slope h (in floating point, as the FMU forms it)
-    stays within [lo, hi]: (b - a) / h, moved by an ulp where rounding would leave a bound."""
+    stays within [lo, hi]: (b - a) / h, moved by an ulp where rounding would leave a bound. A target
+    b outside [lo, hi] keeps its slope, so that the FMU refuses it by name."""
     slope = (b - a) / h
+    if not lo <= b <= hi:
+        return slope
     while a + slope * h < lo:
         slope = math.nextafter(slope, math.inf)
     while a + slope * h > hi:

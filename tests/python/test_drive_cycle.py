@@ -455,3 +455,17 @@ def test_ramps_end_where_the_fmu_extrapolates_them_and_within_range():
         assert 0.0 <= a + s * h <= 100.0
         assert a + s * h == pytest.approx(b, abs=1e-13)
     assert cosim_master.ramp_slope(7.1, 7.1, h) == 0.0
+    assert cosim_master.ramp_slope(0.0, 36604.0, h, -2e4, 2e4) == 36604.0 / h  # the FMU refuses it
+
+
+def test_a_launch_torque_beyond_the_gears_range_stops_the_default_master(tmp_path, capsys):
+    """A 300 t car with a 100 kN m engine: the driver's launch torque exceeds the gear's T_s range
+    (20 kN m). The default master's ramp sends it as it is, and the run stops with one line naming
+    T_s (it once nudged the ramp an ulp at a time towards the range, for ever)."""
+    car = tmp_path / "heavy.toml"
+    car.write_text("[vehicle]\nm = 3e5\n[engine]\nT_max_Nm = 1e5\n")
+    code, _, err = run_cli(["--vehicle", str(car), "--until", "20", "--no-warm",
+                            "--out", str(tmp_path), "--name", "heavy"], capsys)
+    assert code == 2 and len(err.splitlines()) == 1, err
+    assert "T_s" in err and "unexpected" not in err
+    assert not (tmp_path / "heavy").exists()
