@@ -246,6 +246,11 @@ fmi2Status fmi2SetReal(fmi2Component comp, const fmi2ValueReference vr[], size_t
                   "finite", (unsigned)vr[i], value[i]);
             return fmi2Error;
         }
+        if (vr[i] == VR_T_BRAKE && value[i] < 0.0) {
+            logf_(c, fmi2Error, CAT_ERROR, "fmi2SetReal: T_brake = %g N.m is negative: the brakes "
+                  "oppose the wheels' rotation whichever way they turn (min 0)", value[i]);
+            return fmi2Error;
+        }
     }
     for (i = 0; i < n; i++) c->model.v[vr[i]] = value[i];
     return fmi2OK;

@@ -155,6 +155,8 @@ def test_vehicle_state_machine_and_bad_values(fmus, tmp_path):
         car.set(T_hs=1.0)  # an output
     with pytest.raises(Exception):
         car.set(w_w=float("nan"))
+    with pytest.raises(Exception):
+        car.set(T_brake=-5.0)  # below its min of 0
     car.fmu.setupExperiment(startTime=0.0)
     car.set(m=-1.0)
     car.fmu.enterInitializationMode()
