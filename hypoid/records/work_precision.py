@@ -296,8 +296,9 @@ def summary(rows, extra):
     return out
 
 
-def markdown(rows, extra, plots):
-    meta, agree = extra["meta"], extra["agreement"]
+def intro(rows, extra, plots):
+    """The run (which FMU, when, where), the summary and the method."""
+    meta = extra["meta"]
     L = [("Measured with `--quick`. " if meta.get("quick") else "") +
          f"FMU: `{meta['fmu']}` built {meta['fmu_mtime']}; run {meta['started']} – "
          f"{meta.get('finished', '')} on {meta['host']} ({meta['cpu']}, Python {meta['python']}; "
@@ -340,8 +341,14 @@ def markdown(rows, extra, plots):
          "halves its longest step: the DTE errors of loose CVODE settings are slightly "
          "optimistic), and for Newmark one sample per fixed step (a shorter communication step "
          "would shorten its step), so its DTE p-p includes the peaks it steps over.",
-         f"* Map level: {meta.get('map')}.",
-         "", "## Reference and its confirmation", "",
+         f"* Map level: {meta.get('map')}."]
+    return L
+
+
+def references(rows, extra, plots):
+    """The reference per scene, its confirmation by Adams, and each level's model error."""
+    agree = extra["agreement"]
+    L = ["", "## Reference and its confirmation", "",
          "| scene | eta_E | eta_cycle | DTE p-p [µm] | contact loss | mean w_s [rad/s] | impacts | "
          "RTF of the reference | BDF vs Adams: d eta_E / d eta_cycle [%-pt] | d DTE p-p / max abs "
          "d DTE [µm] | d loss | d speed rel |",
@@ -362,6 +369,12 @@ def markdown(rows, extra, plots):
             continue
         L.append(f"| {k} | {lv} | {100 * r['err_eta_E']:.1e} | {100 * r['err_eta_cycle']:.1e} | "
                  f"{1e6 * r['err_dte_pp']:.2f} | {r['err_loss']:.4f} | {r['err_w_rel']:.1e} |")
+    return L
+
+
+def levels(rows, extra, plots):
+    """Each level's defaults, its cheapest converged setting, and the targets."""
+    L = []
     L += ["", "## Defaults per level", "",
           "Each level with no solver setting (the FMU's defaults): the solver `auto` puts in "
           "force, the real-time factor in each scene (0.05 s communication steps, start-up "
@@ -376,6 +389,12 @@ def markdown(rows, extra, plots):
     L += level_table(rows, extra)
     L += ["", "## Where the performance targets stand", "",
           "| target | goal | now | |", "|---|---|---|---|"] + targets(rows, extra)
+    return L
+
+
+def sweep(rows, extra, plots):
+    """The real-time factor against the communication step (when measured)."""
+    L = []
     if extra.get("sweep"):
         comms = sorted({r["comm"] for r in extra["sweep"]})
         L += ["", "### Real-time factor against the communication step", "",
@@ -400,6 +419,12 @@ def markdown(rows, extra, plots):
                 cells.append(f"**{m[0]['rtf']:.0f}x** ({m[0]['us_per_step']:.0f} µs/step)"
                              if m else "–")
             L.append(f"| {lv}, {label} | " + " | ".join(cells) + " |")
+    return L
+
+
+def newmark(rows, extra, plots):
+    """Variable step against the paper's Newmark at equal accuracy."""
+    L = []
     L += ["", "### Variable step vs the paper's fixed-step Newmark at equal accuracy", "",
           "For each Newmark setting of the full model: the cheapest variable-step setting at least as "
           "accurate in both eta_E and DTE p-p, of the full model and of any level.", "",
@@ -416,6 +441,12 @@ def markdown(rows, extra, plots):
                     name = (f"{best['level']}, " if with_level else "") + best["label"]
                     cells += [name, f"{e['cpu'] / best['cpu_per_s']:.1f}x"]
             L.append("| " + " | ".join(cells) + " |")
+    return L
+
+
+def diagnosis(rows, extra, plots):
+    """What sets the cost of the compliant meshes (when measured)."""
+    L = []
     if extra.get("diagnosis"):
         L += ["", "### What sets the cost of the compliant-mesh levels", "",
               "CVODE BDF with max_step free (1 s) in the design scene, the model's ingredients one "
@@ -431,6 +462,12 @@ def markdown(rows, extra, plots):
                              f"{d['steps_per_cycle']:.1f} / {d['rhs_per_cycle']:.1f}, "
                              f"{d['rtf']:.0f}x, {d['us_per_rhs']:.1f} us")
             L.append("| " + " | ".join(c.replace("|", "/") for c in cells) + " |")
+    return L
+
+
+def uses(rows, extra, plots):
+    """The recommendation for each use, and the plots."""
+    L = []
     L += ["", "## Which level and settings for which use", "",
           "Chosen automatically from the table: among the single settings (level, solver, "
           "tolerance) that meet the requirement in every scene of the use, the cheapest (least "
@@ -445,6 +482,13 @@ def markdown(rows, extra, plots):
     L += ["## Table", "", "Every run, with its errors against the reference and the FMU's message "
           "where it failed: [work-precision.csv](work-precision.csv)."]
     return L
+
+
+SECTIONS = (intro, references, levels, sweep, newmark, diagnosis, uses)
+
+
+def markdown(rows, extra, plots):
+    return [line for section in SECTIONS for line in section(rows, extra, plots)]
 
 
 def page(record, folder, _old=None):
