@@ -114,7 +114,8 @@ def cost(record, folder, _old=None):
     for c in d["cells"]:
         err = f"{100 * c['loss_error_vs_full']:+.2f} %" if "loss_error_vs_full" in c else "–"
         rows.append([c["cycle"], f"{c['start']} (oil {c['T_oil0_degC']:g} °C, air "
-                     f"{c['T_amb_degC']:g} °C)", c["level"], f"{c['cpu_s']:.2f}",
+                     f"{c['T_amb_degC']:g} °C)", c["level"], driveline(c.get("sets")),
+                     f"{c['cpu_s']:.2f}",
                      str(c["repeats"]) + ("" if c["repeats_identical"] else " (losses differ)"),
                      f"{c['real_time_factor_cpu']:.1f}x", f"{c['axle_loss_J'] / 1e3:.2f}", err])
     spans = ", ".join(f"{k} {v:.0f} s" for k, v in d["cycles"].items()) or \
@@ -132,6 +133,25 @@ def cost(record, folder, _old=None):
             f"{m['niceness']}; load average (1/5/15 min) at the start → the end: {loads}; "
             f"{d['wall_total_s'] / 60:.0f} min in all. Each run's CPU, wall time and load "
             "average are in the data.")
-    return "\n".join([head(record), text, "",
-                      table(["cycle", "start", "level", "CPU [s]", "runs", "real-time factor "
-                             "(CPU)", "axle loss [kJ]", "against full"], rows)]) + "\n"
+    return "\n".join([head(record), text, "", *heavy_input(d["cells"]),
+                      table(["cycle", "start", "level", "driveline", "CPU [s]", "runs",
+                             "real-time factor (CPU)", "axle loss [kJ]", "against full"],
+                            rows)]) + "\n"
+
+
+def driveline(sets):
+    """The gear's start values a cell changed: an engine and gearbox behind the pinion."""
+    return ", ".join(f"{k} = {v:g} kg·m²" for k, v in sets.items()) if sets else "the defaults"
+
+
+def heavy_input(cells):
+    """The cost with an engine and gearbox behind the pinion against the bare input shaft's, at
+    the same cycle, start and level in the same run."""
+    bare = {(c["cycle"], c["start"], c["level"]): c["cpu_s"] for c in cells if not c.get("sets")}
+    lines = [f"{c['level']} {c['cpu_s'] / bare[(c['cycle'], c['start'], c['level'])]:.2f}×"
+             for c in cells if c.get("sets") and (c["cycle"], c["start"], c["level"]) in bare]
+    if not lines:
+        return []
+    return ["The input side's inertia (an engine and gearbox behind the pinion, I_s = 0.214 kg·m², "
+            "against the bare input shaft's default) changes the levels' CPU by: "
+            + ", ".join(lines) + " (the same cycle and start, in the same run).", ""]
