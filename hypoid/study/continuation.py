@@ -22,7 +22,7 @@ def ramp(sampler, w_from, w_to, ramp_time):
         return
     h = sampler.mesh_step(min(w_from, w_to))  # the finer of the two sampling steps
     n = max(1, int(round(ramp_time / h)))
-    sampler.sample(n, h, w_ramp=(w_from, w_to))
+    sampler.sample(n, h, w_ramp=(w_from, w_to), brief=True)
 
 
 def run_sweep(inst, params, speeds, settings=steady.Settings(), ramp_time=0.1):

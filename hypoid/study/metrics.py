@@ -21,6 +21,7 @@ REALS = SCALARS + AXLE + tuple(f"pair[{k}].{f}" for k in PAIRS for f in PAIR_FIE
 AXLE_FIGURES = ("P_axle_mean_W", "P_in_axle_mean_W", "eta_axle_energy", "P_mesh_mean_W",
                 "P_churn_mean_W", "P_bearings_mean_W", "P_seals_mean_W", "T_oil_mean_C")
 INTEGERS = ("contact", "n_impacts")
+BRIEF = ("w_p", "DTE", "eta")  # what block_stats and the mesh angle read while a point settles
 for _name in REALS + INTEGERS:  # a renamed FMU variable fails here, not in a worker
     TABLE.variable(_name)
 MIN_PAIR_LOAD = 1.0  # N: below it a pair counts as out of contact (docs/physics.md §13.14)
