@@ -513,6 +513,8 @@ def c_inputs_header(inputs):
     h += ["} hg_inputs;", "",
           "double *hg_input(hg_inputs *u, int k);",
           "double hg_input_value(const hg_inputs *u, int k);",
+          "/* u = u0 + du dt input by input (field by field: the right-hand side's inputs). */",
+          "void hg_inputs_at(const hg_inputs *u0, const hg_inputs *du, double dt, hg_inputs *u);",
           "/* The inputs held in v. */",
           "void hg_vars_inputs(const hg_vars *v, hg_inputs *u);", ""]
     return h
@@ -532,6 +534,10 @@ def c_inputs_source(inputs):
           "{", "    return (double *)((char *)u + input_offset[k]);", "}", "",
           "double hg_input_value(const hg_inputs *u, int k)",
           "{", "    return *(const double *)((const char *)u + input_offset[k]);", "}", "",
+          "void hg_inputs_at(const hg_inputs *u0, const hg_inputs *du, double dt, hg_inputs *u)",
+          "{"]
+    c += [f"    u->{v['field']} = u0->{v['field']} + du->{v['field']} * dt;" for _, v in inputs]
+    c += ["}", "",
           "void hg_vars_inputs(const hg_vars *v, hg_inputs *u)",
           "{", "    int k;",
           "    for (k = 0; k < HG_NUM_INPUTS; k++)",

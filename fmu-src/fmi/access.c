@@ -48,11 +48,17 @@ hg_status hg_prepare_get(hg_instance *c, const char *fn, const void *vr, size_t 
  * fmi3Int32, fmi2String / fmi3String); Booleans are converted by the FMI 3.0 adapter. */
 hg_status hg_get_value(hg_instance *c, const char *fn, hg_base_type type, hg_vr vr, void *value)
 {
-    static const size_t size[] = {sizeof(double), sizeof(int), sizeof(int), sizeof(char *)};
     const hg_var_info *info = hg_lookup(c, fn, vr, type);
+    const void *field;
     int computed = info && (info->causality == HG_OUTPUT || info->causality == HG_LOCAL);
     if (!info || (computed && hg_instance_output(c, fn, info) != HG_OK)) return HG_ERROR;
-    memcpy(value, hg_var_cptr(&c->vars, info), size[type]);
+    field = hg_var_cptr(&c->vars, info);
+    if (type == HG_REAL) /* by type, not a memcpy of its size: a host reads many at a time */
+        *(double *)value = *(const double *)field;
+    else if (type == HG_STRING)
+        *(char **)value = *(char *const *)field;
+    else
+        *(int *)value = *(const int *)field;
     return HG_OK;
 }
 

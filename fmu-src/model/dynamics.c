@@ -2,6 +2,7 @@
 #include "model/dynamics.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 
 #include "hg_vars.h"
@@ -170,7 +171,10 @@ static void pair_forces(const hg_dyn_params *p, const double *y, int with_contac
     if (!with_contact) return;
     if (tabulated) {
         hg_friction_table_pairs_blend(lo, hi, b->w, theta, ev->W_pair, w_p, w_g, ev->T_oil, F);
-        for (k = 0; k < HG_MAX_PAIRS; k++) ev->pair[k].F_f = F[k];
+        for (k = 0; k < HG_MAX_PAIRS; k++) {
+            ev->pair[k].F_f = F[k];
+            ev->pair[k].F_v = 0.0; /* tabulated: no viscous share (pair_friction's P_visc) */
+        }
         return;
     }
     for (k = 0; k < HG_MAX_PAIRS; k++) {
@@ -235,10 +239,13 @@ static void map_loss(const hg_dyn_params *p, const double *y,
 static void losses(const hg_dyn_params *p, const double *y,
                    int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
-    if (p->friction.model == HG_FRICTION_MODEL_MAP)
-        map_loss(p, y, ev);
-    else if (p->friction.model != HG_FRICTION_MODEL_NONE || all_pairs)
+    if (p->friction.model != HG_FRICTION_MODEL_MAP &&
+        (p->friction.model != HG_FRICTION_MODEL_NONE || all_pairs)) {
         pair_friction(p, y, all_pairs, T_c_warm, ev);
+        return;
+    }
+    memset(ev->pair, 0, sizeof ev->pair); /* the pairs carry no friction */
+    if (p->friction.model == HG_FRICTION_MODEL_MAP) map_loss(p, y, ev);
 }
 
 /* The other losses of the axle at the mesh load of ev (axle_losses = full). */
@@ -367,7 +374,7 @@ void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const
                      int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
     double d1, d2 = y[HG_Y_W_G] - y[HG_Y_W_W];
-    memset(ev, 0, sizeof *ev);
+    memset(ev, 0, offsetof(hg_dyn_eval, pair)); /* the pairs: losses() */
     ev->w_s = hg_dyn_input_speed(p, y);
     d1 = ev->w_s - y[HG_Y_W_P];
     ev->T_oil = hg_dyn_oil_temperature(p, u, y);

@@ -100,10 +100,13 @@ typedef struct {
     int flank;         /* HG_FLANK_DRIVE or _COAST: whose tooth data apply (the drive flank's
                           off the varying mesh) */
     hg_level_pick pick; /* the levels around the filtered torque T_km on that flank */
-    double W_pair[HG_MAX_PAIRS];
-    hg_pair_friction pair[HG_MAX_PAIRS];
     int located;      /* cell holds the mesh angle's cell of the phase table */
-    hg_pt_cell cell;
+    double W_pair[HG_MAX_PAIRS];
+    /* Not zeroed with the rest (the right-hand side's largest part): every field the friction
+     * model's (hg_friction_pair), F_f alone and F_v = 0 from the friction tables, zero without
+     * pair friction (the map level, none). */
+    hg_pair_friction pair[HG_MAX_PAIRS];
+    hg_pt_cell cell;  /* set when located */
 } hg_dyn_eval;
 
 /* Evaluates everything at state y in contact mode `mode`. Pair quantities are computed when the

@@ -281,23 +281,34 @@ static void drifts(const hg_ft_key *k, double w_p, double w_g, double T_bath,
     d[HG_FT_CH_T] = held(T_bath - k->T_bath, HG_FT_T_DRIFT);
 }
 
-/* ln mu at the phase stencil ps (its first node shifted by `shift` nodes) and pair load W. */
-static double ln_mu_at(const hg_friction_table *t, const phase_stencil *ps, int shift, double W,
-                       const double d[HG_FT_N_CH])
+/* The load part of a stencil: the cell's first node j0 (0 ... N_L - 2) and the weights, at pair
+ * load W of a table whose 1 / W_max is per_W_max. */
+typedef struct {
+    int j0;
+    double w[4];
+} load_stencil;
+
+static void load_stencil_at(double per_W_max, double W, load_stencil *st)
 {
-    double v = (HG_FT_N_L - 1) * (1.0 + log(W * t->per_W_max) * (1.0 / -LN_W_SPAN)), wj[4];
-    double acc[HG_FT_N_CH] = {0.0, 0.0, 0.0, 0.0}, sum = 0.0;
-    int i0 = (ps->i0 + shift) % HG_FT_N_PSI, j0, k, l, ch;
+    double v = (HG_FT_N_L - 1) * (1.0 + log(W * per_W_max) * (1.0 / -LN_W_SPAN));
     v = v > 0.0 ? (v < HG_FT_N_L - 1.0 ? v : HG_FT_N_L - 1.0)
                 : 0.0; /* mu held beyond the load range (and NaN) */
-    j0 = (int)v;
-    if (j0 > HG_FT_N_L - 2) j0 = HG_FT_N_L - 2;
-    weights(v - j0, wj);
+    st->j0 = (int)v;
+    if (st->j0 > HG_FT_N_L - 2) st->j0 = HG_FT_N_L - 2;
+    weights(v - st->j0, st->w);
+}
+
+/* ln mu at the phase stencil ps (its first node shifted by `shift` nodes) and load stencil ls. */
+static double ln_mu_at(const hg_friction_table *t, const phase_stencil *ps, int shift,
+                       const load_stencil *ls, const double d[HG_FT_N_CH])
+{
+    double acc[HG_FT_N_CH] = {0.0, 0.0, 0.0, 0.0}, sum = 0.0;
+    int i0 = (ps->i0 + shift) % HG_FT_N_PSI, k, l, ch;
     for (k = 0; k < 4; k++) { /* channel by channel (independent lanes), then the drifts */
-        const double(*e)[HG_FT_N_CH] = t->c[i0 + k] + j0; /* nodes i0 - 1 + k, j0 - 1 ... */
+        const double(*e)[HG_FT_N_CH] = t->c[i0 + k] + ls->j0; /* nodes i0 - 1 + k, j0 - 1 ... */
         double row[HG_FT_N_CH] = {0.0, 0.0, 0.0, 0.0};
         for (l = 0; l < 4; l++)
-            for (ch = 0; ch < HG_FT_N_CH; ch++) row[ch] += wj[l] * e[l][ch];
+            for (ch = 0; ch < HG_FT_N_CH; ch++) row[ch] += ls->w[l] * e[l][ch];
         for (ch = 0; ch < HG_FT_N_CH; ch++) acc[ch] += ps->w[k] * row[ch];
     }
     for (ch = 0; ch < HG_FT_N_CH; ch++) sum += d[ch] * acc[ch];
@@ -308,26 +319,52 @@ double hg_friction_table_F(const hg_friction_table *t, double psi, double W, dou
                            double w_g, double T_bath)
 {
     phase_stencil ps;
+    load_stencil ls;
     double d[HG_FT_N_CH];
     if (W < HG_EHL_LOAD_MIN) return 0.0;
     drifts(&t->key, w_p, w_g, T_bath, d);
     phase_stencil_at(psi * (HG_FT_N_PSI / HG_TWO_PI), &ps);
-    return W * exp(ln_mu_at(t, &ps, 0, W, d));
+    load_stencil_at(t->per_W_max, W, &ls);
+    return W * exp(ln_mu_at(t, &ps, 0, &ls, d));
+}
+
+/* What the three pairs' lookups in a table share: the drifts, the phase stencil at mesh angle
+ * theta, each pair's load stencil (pair k at psi = (theta + 2 pi k) / 3); tables of one key share
+ * all of it. */
+typedef struct {
+    double d[HG_FT_N_CH];
+    phase_stencil ps;
+    load_stencil ls[HG_MAX_PAIRS];
+} pairs_stencil;
+
+static void pairs_stencil_at(const hg_friction_table *t, double theta,
+                             const double W[HG_MAX_PAIRS], double w_p, double w_g, double T_bath,
+                             pairs_stencil *st)
+{
+    int k;
+    drifts(&t->key, w_p, w_g, T_bath, st->d);
+    phase_stencil_at(theta * (HG_FT_N_PSI / (3.0 * HG_TWO_PI)), &st->ps);
+    for (k = 0; k < HG_MAX_PAIRS; k++)
+        if (!(W[k] < HG_EHL_LOAD_MIN)) load_stencil_at(t->per_W_max, W[k], &st->ls[k]);
+}
+
+static void pairs_at(const hg_friction_table *t, const pairs_stencil *st,
+                     const double W[HG_MAX_PAIRS], double F[HG_MAX_PAIRS])
+{
+    int k;
+    for (k = 0; k < HG_MAX_PAIRS; k++)
+        F[k] = W[k] < HG_EHL_LOAD_MIN
+                   ? 0.0
+                   : W[k] * exp(ln_mu_at(t, &st->ps, k * (HG_FT_N_PSI / 3), &st->ls[k], st->d));
 }
 
 void hg_friction_table_pairs(const hg_friction_table *t, double theta,
                              const double W[HG_MAX_PAIRS], double w_p, double w_g, double T_bath,
                              double F[HG_MAX_PAIRS])
 {
-    phase_stencil ps;
-    double d[HG_FT_N_CH];
-    int k;
-    drifts(&t->key, w_p, w_g, T_bath, d);
-    phase_stencil_at(theta * (HG_FT_N_PSI / (3.0 * HG_TWO_PI)), &ps);
-    for (k = 0; k < HG_MAX_PAIRS; k++)
-        F[k] = W[k] < HG_EHL_LOAD_MIN
-                   ? 0.0
-                   : W[k] * exp(ln_mu_at(t, &ps, k * (HG_FT_N_PSI / 3), W[k], d));
+    pairs_stencil st;
+    pairs_stencil_at(t, theta, W, w_p, w_g, T_bath, &st);
+    pairs_at(t, &st, W, F);
 }
 
 void hg_friction_table_pairs_blend(const hg_friction_table *lo, const hg_friction_table *hi,
@@ -335,10 +372,15 @@ void hg_friction_table_pairs_blend(const hg_friction_table *lo, const hg_frictio
                                    double w_p, double w_g, double T_bath, double F[HG_MAX_PAIRS])
 {
     double F_hi[HG_MAX_PAIRS];
+    pairs_stencil st;
     int k;
-    hg_friction_table_pairs(lo, theta, W, w_p, w_g, T_bath, F);
+    pairs_stencil_at(lo, theta, W, w_p, w_g, T_bath, &st);
+    pairs_at(lo, &st, W, F);
     if (!(w > 0.0) || hi == lo) return;
-    hg_friction_table_pairs(hi, theta, W, w_p, w_g, T_bath, F_hi);
+    /* the same key (a set's tables always): the same stencils, so they are not computed again */
+    if (memcmp(&hi->key, &lo->key, sizeof lo->key) || hi->per_W_max != lo->per_W_max)
+        pairs_stencil_at(hi, theta, W, w_p, w_g, T_bath, &st);
+    pairs_at(hi, &st, W, F_hi);
     for (k = 0; k < HG_MAX_PAIRS; k++) F[k] += w * (F_hi[k] - F[k]);
 }
 

@@ -83,16 +83,16 @@ static int rhs(double t, const double *y_in, double *ydot_out, void *user)
     int n = m->s.n_active;
     double y_all[HG_NY], ydot_all[HG_NY];
     const double *y = y_in;
-    double *ydot = n < HG_NY ? ydot_all : ydot_out;
-    if (n < HG_NY) {
-        memcpy(y_all, y_in, (size_t)n * sizeof *y_all);
-        memset(y_all + n, 0, (size_t)(HG_NY - n) * sizeof *y_all);
+    double *ydot = n == HG_Y_TWIST_HS ? ydot_all : ydot_out; /* n: HG_NY or HG_Y_TWIST_HS */
+    if (n == HG_Y_TWIST_HS) { /* without the half-shaft: copies of a constant size, inlined */
+        memcpy(y_all, y_in, HG_Y_TWIST_HS * sizeof *y_all);
+        memset(y_all + HG_Y_TWIST_HS, 0, (HG_NY - HG_Y_TWIST_HS) * sizeof *y_all);
         y = y_all;
     }
     hg_stepping_inputs_at(&m->rt, t, &u);
     hg_dyn_evaluate(&m->s.p, &u, m->rt.mode, y, 0, m->rt.T_c_warm, &ev);
     hg_dyn_derivatives(&m->s.p, &u, y, &ev, ydot);
-    if (n < HG_NY) memcpy(ydot_out, ydot_all, (size_t)n * sizeof *ydot_out);
+    if (n == HG_Y_TWIST_HS) memcpy(ydot_out, ydot_all, HG_Y_TWIST_HS * sizeof *ydot_out);
     return 0;
 }
 

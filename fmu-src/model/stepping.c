@@ -109,10 +109,7 @@ double hg_stepping_wheel_torque(const hg_runtime *rt, double T_w_now)
 
 void hg_stepping_inputs_at(const hg_runtime *rt, double t, hg_inputs *u)
 {
-    double dt = t - rt->t_u0;
-    int k;
-    for (k = 0; k < HG_NUM_INPUTS; k++)
-        *hg_input(u, k) = hg_input_value(&rt->u0, k) + hg_input_value(&rt->du, k) * dt;
+    hg_inputs_at(&rt->u0, &rt->du, t - rt->t_u0, u);
 }
 
 /* Bitwise: hg_inputs holds only (finite) doubles; a -0 for a 0 counts as a change. */
@@ -293,9 +290,7 @@ static void check_map_range(hg_runtime *rt, const hg_effmap *map, int s_sump,
 void hg_stepping_end(hg_runtime *rt, const hg_setup *s, double t_end, double h,
                      const hg_logger *lg)
 {
-    int k;
     rt->t = t_end;
-    for (k = 0; k < HG_NUM_INPUTS; k++) /* u0 + du h, not du (t_end - t_u0): a host's own sum */
-        *hg_input(&rt->u_end, k) = hg_input_value(&rt->u0, k) + hg_input_value(&rt->du, k) * h;
+    hg_inputs_at(&rt->u0, &rt->du, h, &rt->u_end); /* du h, not du (t_end - t_u0): a host's sum */
     check_map_range(rt, s->p.map, s->p.ledger.sump, lg);
 }
