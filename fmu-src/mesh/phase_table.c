@@ -238,20 +238,27 @@ static void pairs_one(const hg_phase_table *t, const hg_pt_cell *c, int with_con
     }
 }
 
-static void blend_pairs(hg_pair_geometry *out, const hg_pair_geometry *hi, double w,
-                        int with_contact)
+/* The pairs' values blended between the tables lo and hi (upper weight w) as they are read:
+ * pairs_one of each, then blend(), without the second table's values stored in between. */
+static void pairs_two(const hg_phase_table *lo, const hg_phase_table *hi, double w,
+                      const hg_pt_cell *c, int with_contact, hg_pair_geometry *out)
 {
-    int k, i;
+    int k;
     for (k = 0; k < HG_MAX_PAIRS; k++) {
-        out->ls[k] = blend(out->ls[k], hi->ls[k], w);
-        for (i = 0; i < 2; i++) {
-            out->up[k][i] = blend(out->up[k][i], hi->up[k][i], w);
-            out->ug[k][i] = blend(out->ug[k][i], hi->ug[k][i], w);
-        }
+        int i0 = (c->i + k * HG_PT_N_MESH) % HG_PT_N_PAIR, i1 = (i0 + 1) % HG_PT_N_PAIR;
+#define BL(j) blend(value(c, lo->pair[i0][j], lo->pair[i1][j]), \
+                    value(c, hi->pair[i0][j], hi->pair[i1][j]), w)
+        out->ls[k] = BL(HG_PT_LS);
+        out->up[k][0] = BL(HG_PT_UP_X);
+        out->up[k][1] = BL(HG_PT_UP_Y);
+        out->ug[k][0] = BL(HG_PT_UG_X);
+        out->ug[k][1] = BL(HG_PT_UG_Y);
         if (!with_contact) continue;
-        out->R_x[k] = blend(out->R_x[k], hi->R_x[k], w);
-        out->R_y[k] = blend(out->R_y[k], hi->R_y[k], w);
-        for (i = 0; i < 2; i++) out->vc[k][i] = blend(out->vc[k][i], hi->vc[k][i], w);
+        out->R_x[k] = BL(HG_PT_R_X);
+        out->R_y[k] = BL(HG_PT_R_Y);
+        out->vc[k][0] = BL(HG_PT_VC_X);
+        out->vc[k][1] = BL(HG_PT_VC_Y);
+#undef BL
     }
 }
 
@@ -259,12 +266,10 @@ void hg_phase_table_pairs(const hg_phase_tables *ts, const hg_level_pick *b, con
                           int with_contact, hg_pair_geometry *out)
 {
     int k;
-    pairs_one(table_of(ts, b, b->lo), c, with_contact, out);
-    if (b->w > 0.0) {
-        hg_pair_geometry hi;
-        pairs_one(table_of(ts, b, b->hi), c, with_contact, &hi);
-        blend_pairs(out, &hi, b->w, with_contact);
-    }
+    if (b->w > 0.0)
+        pairs_two(table_of(ts, b, b->lo), table_of(ts, b, b->hi), b->w, c, with_contact, out);
+    else
+        pairs_one(table_of(ts, b, b->lo), c, with_contact, out);
     for (k = 0; k < HG_MAX_PAIRS; k++) out->ls[k] = hg_gearset_share_clamp(out->ls[k]);
     hg_gearset_normalise_shares(out->ls);
 }
