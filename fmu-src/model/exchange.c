@@ -17,7 +17,7 @@ typedef char hg_state_order_check[HG_STATE_ORDER_OK && HG_NUM_STATES == HG_NY &&
  * key moves) and puts the right-hand side on them, or on the direct solve near standstill. */
 static void key_tables(hg_model *m)
 {
-    int rebuild = hg_ftp_stale(m->tables, &m->rt, &m->s.p, &m->rt.u0, 1);
+    int rebuild = hg_ftp_stale(m->tables, &m->rt, &m->s.p, &m->rt.u0);
     hg_ftp_begin(m->tables, &m->rt, &m->s, rebuild, &m->log);
 }
 
@@ -27,7 +27,7 @@ static int tables_due(const hg_model *m)
 {
     hg_runtime probe = m->rt;
     int use = m->tables && hg_ft_speed_tabulated(probe.y[HG_Y_W_P]);
-    return hg_ftp_stale(m->tables, &probe, &m->s.p, &probe.u0, 1) ||
+    return hg_ftp_stale(m->tables, &probe, &m->s.p, &probe.u0) ||
            use != (m->s.p.tables != NULL);
 }
 

@@ -34,6 +34,11 @@ double hg_ft_load_range_on_lattice(double W_max)
     return W;
 }
 
+double hg_ft_temperature_on_lattice(double T_bath)
+{
+    return 2.0 * HG_FT_T_DRIFT * floor(T_bath * (0.5 / HG_FT_T_DRIFT) + 0.5);
+}
+
 void hg_ft_node_keys(const hg_ft_key *key, double ratio, hg_ft_key *lo, hg_ft_key *hi)
 {
     double x = log(fabs(key->w_p) > HG_FT_SPEED_MIN ? fabs(key->w_p) : HG_FT_SPEED_MIN);

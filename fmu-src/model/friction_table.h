@@ -91,13 +91,21 @@ int hg_ft_key_covers(const hg_ft_key *key, double w_p, double T_bath, double W_t
 void hg_ft_key_next(hg_ft_key *key, int valid, double w_p, double ratio, double T_bath,
                     double W_t);
 
-/* The load range a host's integrator (Model Exchange) keys its tables on: the smallest
+/* The load range the tables are keyed on (friction_table_policy.h): the smallest
  * 1000 N x 4^k at or above W_max. The tables' loads are spaced evenly in ln W over three decades
- * below W_max whatever it is, so the range serves as well; a launch or a tip-out then meets a few
- * ranges again and again instead of a new one at every 40 % of load, and their node tables are
- * found in the store (each new range solves its own), with fewer step events. The model's own
- * integrator (co-simulation) keeps the range at twice the load. */
+ * below W_max whatever it is, so the range serves as well; a launch, a tip-out or a drive
+ * cycle's load swings then meet a few ranges again and again instead of a new one at every 40 %
+ * of load, and their node tables are found in the store (each new range solves its own), with
+ * fewer step events. */
 double hg_ft_load_range_on_lattice(double W_max);
+
+/* The bath temperature the tables are keyed on (friction_table_policy.h): the nearest multiple
+ * of 2 HG_FT_T_DRIFT [K], which still covers T_bath (hg_ft_key_covers: within HG_FT_T_DRIFT), so
+ * the drift from the key stays within the window the tables' error is tested over. An oil that
+ * warms through a drive cycle then keys its tables at a few temperatures, each every 2 K, and
+ * finds their node tables again at every speed and load range it comes back to, where a key at
+ * the temperature itself was new at every kelvin. */
+double hg_ft_temperature_on_lattice(double T_bath);
 
 /* Beyond this friction coefficient (parameters far outside physics, e.g. a vanishing k_f) the
  * table is not used: the direct solve runs, and fails as it would without the table. */

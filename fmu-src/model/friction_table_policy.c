@@ -48,9 +48,10 @@ static int keyed_for(const hg_ft_set *tables, const hg_ft_key *key)
 }
 
 /* The key follows the operating point: speed, oil temperature and a load estimate (input torque
- * over the mean radius, or the mean spring force). */
+ * over the mean radius, or the mean spring force), its temperature and load range on their
+ * lattices. */
 int hg_ftp_stale(const hg_ft_set *tables, hg_runtime *rt, const hg_dyn_params *p,
-                 const hg_inputs *u, int load_lattice)
+                 const hg_inputs *u)
 {
     double w_p = rt->y[HG_Y_W_P], T_oil = hg_dyn_oil_temperature(p, u, rt->y), W;
     if (!tables || !hg_ft_speed_tabulated(w_p)) return 0;
@@ -58,7 +59,8 @@ int hg_ftp_stale(const hg_ft_set *tables, hg_runtime *rt, const hg_dyn_params *p
              p->k_m0 * fabs(hg_backlash_f(&p->backlash, rt->y[HG_Y_X], rt->mode)));
     if (!rt->ft_valid || !hg_ft_key_covers(&rt->ft_key, w_p, T_oil, W)) {
         hg_ft_key_next(&rt->ft_key, rt->ft_valid, w_p, p->ratio, T_oil, W);
-        if (load_lattice) rt->ft_key.W_max = hg_ft_load_range_on_lattice(rt->ft_key.W_max);
+        rt->ft_key.W_max = hg_ft_load_range_on_lattice(rt->ft_key.W_max);
+        rt->ft_key.T_bath = hg_ft_temperature_on_lattice(rt->ft_key.T_bath);
         rt->ft_valid = 1;
     }
     return !keyed_for(tables, &rt->ft_key);

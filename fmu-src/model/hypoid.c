@@ -214,7 +214,7 @@ static void begin_inputs(hg_model *m, const hg_vars *v, const hg_inputs *du, dou
     hg_stepping_wheel_input(rt, &m->s, &u, &du_in);
     du = &du_in;
     change = hg_stepping_change(rt, &u, du);
-    rebuild = hg_ftp_stale(m->tables, rt, &m->s.p, &u, 0);
+    rebuild = hg_ftp_stale(m->tables, rt, &m->s.p, &u);
     keep = m->s.explicit_rk && !rt->restart && (change == HG_INPUTS_JUMP || rebuild);
     if (change == HG_INPUTS_JUMP || rebuild || (rt->ahead && change != HG_INPUTS_SAME))
         rt->restart = 1;

@@ -219,6 +219,50 @@ static void test_load_lattice(void)
     CHECK(n == 10 && n_lat == 3);
 }
 
+/* hg_ft_temperature_on_lattice: an even number of kelvin, within HG_FT_T_DRIFT of the
+ * temperature, so a key moved onto it as friction_table_policy.c does still covers the
+ * temperature that moved it, from -60 to 200 degC; an oil warming from 20 to 60 degC and cooling
+ * back at another rate keys its tables on 21 temperatures, the same both ways, where keys at the
+ * temperature itself are new at every kelvin either way (about 80 here). */
+static void test_temperature_lattice(void)
+{
+    double T, seen[256], seen_lat[256], T_lat;
+    int n = 0, n_lat = 0, j, k;
+    hg_ft_key key, lat;
+    CHECK(hg_ft_temperature_on_lattice(293.15) == 294.0);
+    CHECK(hg_ft_temperature_on_lattice(292.9) == 292.0);
+    CHECK(hg_ft_temperature_on_lattice(295.0) == 296.0);
+    for (T = 213.15; T < 473.15; T += 0.0137) {
+        T_lat = hg_ft_temperature_on_lattice(T);
+        CHECK(T_lat == 2.0 * floor(0.5 * T_lat) && fabs(T - T_lat) <= HG_FT_T_DRIFT);
+        hg_ft_key_for(100.0, 36.0 / 13.0, T_lat, 2000.0, &key);
+        if (!hg_ft_key_covers(&key, 100.0, T, 2000.0)) {
+            CHECK(0);
+            break;
+        }
+    }
+    hg_ft_key_for(100.0, 36.0 / 13.0, 293.15, 2000.0, &key);
+    lat = key;
+    lat.T_bath = hg_ft_temperature_on_lattice(lat.T_bath);
+    for (k = 0; k <= 9714; k++) { /* 20 -> 60 degC in steps of 0.01 K, back in 0.007 K */
+        T = k <= 4000 ? 293.15 + 0.01 * k : 333.15 - 0.007 * (k - 4000);
+        if (!hg_ft_key_covers(&key, 100.0, T, 2000.0))
+            hg_ft_key_next(&key, 1, 100.0, 36.0 / 13.0, T, 2000.0);
+        if (!hg_ft_key_covers(&lat, 100.0, T, 2000.0)) {
+            hg_ft_key_next(&lat, 1, 100.0, 36.0 / 13.0, T, 2000.0);
+            lat.T_bath = hg_ft_temperature_on_lattice(lat.T_bath);
+        }
+        CHECK(hg_ft_key_covers(&lat, 100.0, T, 2000.0));
+        for (j = 0; j < n && seen[j] != key.T_bath; j++) continue;
+        if (j == n && n < 256) seen[n++] = key.T_bath;
+        for (j = 0; j < n_lat && seen_lat[j] != lat.T_bath; j++) continue;
+        if (j == n_lat && n_lat < 256) seen_lat[n_lat++] = lat.T_bath;
+    }
+    printf("an oil warming 20 -> 60 -> 20 degC: %d key temperatures on the lattice, %d at the "
+           "temperature itself\n", n_lat, n);
+    CHECK(n_lat == 21 && n >= 60);
+}
+
 /* Beyond twice its window the table holds its drift terms: built at 0.3 rpm (the 10 rpm torque
  * reversal's standstill), where ln mu rises by ~23 per rad/s, an unheld extrapolation to
  * 0.8 rad/s (the speed that step reached) gave mu ~ 3e5, a friction so stiff that arkode_erk's
@@ -316,6 +360,7 @@ int main(void)
     int k, thermal, rigid;
     test_key_next();
     test_load_lattice();
+    test_temperature_lattice();
     CHECK(hg_gearset_load("resources/gearsets/gearset1.txt", &g, err, sizeof err) == 0);
     for (k = 0; k < 2; k++)
         for (thermal = 0; thermal < 2; thermal++) {

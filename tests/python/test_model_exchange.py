@@ -182,10 +182,10 @@ def test_prepared_real_calls_match_the_checked_ones(fmu_path):
 
 
 def test_friction_tables_keyed_on_the_load_lattice(fmu_path):
-    """In Model Exchange the friction tables' load range is one of 1000 N x 4^k
-    (hg_ft_load_range_on_lattice): the launch of tests/cosim's scene, whose pair load grows from
-    nothing to 5.5 kN, keys its tables on three ranges (at twice the load, as co-simulation keys
-    them, it took five: 1.0 / 2.6 / 4.5 / 7.6 / 11.0 kN), each solving its own node tables."""
+    """In Model Exchange, as in co-simulation, the friction tables' load range is one of
+    1000 N x 4^k (hg_ft_load_range_on_lattice): the launch of tests/cosim's scene, whose pair
+    load grows from nothing to 5.5 kN, keys its tables on three ranges (at twice the load itself
+    it took five: 1.0 / 2.6 / 4.5 / 7.6 / 11.0 kN), each solving its own node tables."""
     import re
     import sys
 
