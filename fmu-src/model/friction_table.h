@@ -99,8 +99,8 @@ void hg_ft_key_next(hg_ft_key *key, int valid, double w_p, double ratio, double 
  * fewer step events. */
 double hg_ft_load_range_on_lattice(double W_max);
 
-/* The bath temperature the tables are keyed on (friction_table_policy.h): the nearest multiple
- * of 2 HG_FT_T_DRIFT [K], which still covers T_bath (hg_ft_key_covers: within HG_FT_T_DRIFT), so
+/* The bath temperature the tables are keyed on once it moves (friction_table_policy.h): the
+ * nearest multiple of 2 HG_FT_T_DRIFT [K], which still covers T_bath (hg_ft_key_covers: within HG_FT_T_DRIFT), so
  * the drift from the key stays within the window the tables' error is tested over. An oil that
  * warms through a drive cycle then keys its tables at a few temperatures, each every 2 K, and
  * finds their node tables again at every speed and load range it comes back to, where a key at

@@ -48,8 +48,8 @@ static int keyed_for(const hg_ft_set *tables, const hg_ft_key *key)
 }
 
 /* The key follows the operating point: speed, oil temperature and a load estimate (input torque
- * over the mean radius, or the mean spring force), its temperature and load range on their
- * lattices. */
+ * over the mean radius, or the mean spring force), its load range on its lattice and, once it
+ * has moved, its temperature on its own. */
 int hg_ftp_stale(const hg_ft_set *tables, hg_runtime *rt, const hg_dyn_params *p,
                  const hg_inputs *u)
 {
@@ -58,9 +58,12 @@ int hg_ftp_stale(const hg_ft_set *tables, hg_runtime *rt, const hg_dyn_params *p
     W = fmax(fabs(u->T_s) / p->R_p0,
              p->k_m0 * fabs(hg_backlash_f(&p->backlash, rt->y[HG_Y_X], rt->mode)));
     if (!rt->ft_valid || !hg_ft_key_covers(&rt->ft_key, w_p, T_oil, W)) {
+        double T_key = rt->ft_key.T_bath;
+        int moved = rt->ft_valid;
         hg_ft_key_next(&rt->ft_key, rt->ft_valid, w_p, p->ratio, T_oil, W);
+        moved = moved && rt->ft_key.T_bath != T_key;
         rt->ft_key.W_max = hg_ft_load_range_on_lattice(rt->ft_key.W_max);
-        rt->ft_key.T_bath = hg_ft_temperature_on_lattice(rt->ft_key.T_bath);
+        if (moved) rt->ft_key.T_bath = hg_ft_temperature_on_lattice(rt->ft_key.T_bath);
         rt->ft_valid = 1;
     }
     return !keyed_for(tables, &rt->ft_key);

@@ -24,11 +24,13 @@ int hg_ftp_setup(hg_ft_set **tables, hg_setup *s, const char *resource_dir, cons
 void hg_ftp_free(hg_ft_set **tables);
 
 /* At a step's start with inputs u, before the step begins: moves rt's key onto the operating
- * point when it no longer covers it, its temperature on hg_ft_temperature_on_lattice's lattice
- * and its load range on hg_ft_load_range_on_lattice's (the model's own integrator and a host's
- * alike). 1 when the tables must be built again, else 0 (also without tables and near
- * standstill). A new key changes the right-hand side within the tables' error: like a jump of
- * the inputs it restarts the integrator, whose history saw the old one. */
+ * point when it no longer covers it, its load range on hg_ft_load_range_on_lattice's lattice
+ * and its temperature, when that moves, on hg_ft_temperature_on_lattice's (the first key keeps
+ * the temperature itself: a run at a constant oil temperature keeps the drift terms at 0), for
+ * the model's own integrator and a host's alike. 1 when the tables must be built again, else 0
+ * (also without tables and near standstill). A new key changes the right-hand side within the
+ * tables' error: like a jump of the inputs it restarts the integrator, whose history saw the
+ * old one. */
 int hg_ftp_stale(const hg_ft_set *tables, hg_runtime *rt, const hg_dyn_params *p,
                  const hg_inputs *u);
 
