@@ -51,6 +51,7 @@ typedef struct {
     /* best bracket so far: g(xa) >= 0 (root at or right of xa), g(xb) <= 0 */
     int have_a, have_b;
     double xa, fa, ta, xb, fb, tb;
+    double dtau; /* dtau/dT at the last evaluation */
 } solver;
 
 /* g(T) = T_in + c0 + c1 tau(T) - T (eq. 14) and dg/dT = c1 dtau/dT - 1 */
@@ -59,6 +60,7 @@ static double g_eval(solver *s, double T, double *tau, double *dg)
     double dtau = NAN;
     *tau = s->fn(T, s->ctx, &dtau);
     s->n++;
+    s->dtau = dtau;
     *dg = s->pb->c1 * dtau - 1.0;
     return s->pb->T_in + s->pb->c0 + s->pb->c1 * *tau - T;
 }
@@ -101,8 +103,8 @@ static int first_guess(solver *s, double x, double f, double t)
 
 /* 1. seed the bracket with safeguarded Newton steps from the warm start (or from T_in): every
  *    evaluated point tightens the bracket by the sign of g. From a good warm start one or two
- *    steps land within tol/4 of the root; a probe just beyond then closes a bracket narrower
- *    than tol. */
+ *    steps land within tol/4 of the root: where |g| <= tol/4 the Newton step from there ends the
+ *    solve, else a probe just beyond the root closes a bracket narrower than tol. */
 static int seed(solver *s, double T_warm)
 {
     const hg_tc_problem *pb = s->pb;
@@ -121,6 +123,11 @@ static int seed(solver *s, double T_warm)
         step = (df < 0.0 && isfinite(df)) ? -f / df : f; /* Newton, else the fixed-point image */
         lo = s->have_a ? s->xa : pb->T_in;
         hi = s->have_b ? s->xb : s->T_cap;
+        xn = x + step;
+        if (fabs(f) <= 0.25 * pb->tol && xn > lo && xn < hi)
+            /* g falls with slope <= -1, so the root lies within |g| <= tol/4 of x, and x + step
+             * within tol/2 of it: done, tau carried along its derivative (error O(step^2)) */
+            return finish(s, xn, t + step * (isfinite(s->dtau) ? s->dtau : 0.0), 0);
         if (fabs(step) < 0.25 * pb->tol) {
             /* within tol/4 of the root: probe just beyond it to close the bracket */
             xn = x + step + (step > 0.0 ? 0.25 : -0.25) * pb->tol;
@@ -130,7 +137,6 @@ static int seed(solver *s, double T_warm)
             record(s, xn, f, t);
             break;
         }
-        xn = x + step;
         if (!(xn > lo && xn < hi)) {
             /* outside the bracket: fixed-point image (a valid bound for monotone tau), else
              * bisection */

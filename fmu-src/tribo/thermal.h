@@ -65,14 +65,18 @@ typedef double (*hg_tau_fn)(double T, void *ctx, double *dtau_dT);
 /* Guaranteed-convergent solve of g(T) = 0 to |T_c - root| <= pb->tol (never plain
  * substitution):
  *  1. seed: safeguarded Newton steps from T_warm (the previous T_c; NaN or <= T_in for none) or
- *     from T_in; every evaluated point tightens a sign bracket [a: g >= 0, b: g <= 0]; once a
- *     step is below tol/4, one probe just beyond the root closes a bracket narrower than tol;
+ *     from T_in; every evaluated point tightens a sign bracket [a: g >= 0, b: g <= 0]; a point
+ *     where |g| <= tol/4 is within tol/4 of the root (g falls with slope <= -1, below), and its
+ *     Newton step ends the solve there; else, once a step is below tol/4, one probe just beyond
+ *     the root closes a bracket narrower than tol;
  *  2. complete the bracket if needed with fixed-point images T + g(T), which land on the far
  *     side of the root because g is decreasing with slope <= -1 (from g > 0 at or beyond the
  *     root, from g < 0 at or below it and never below T_in), expanding up to T_max otherwise;
  *  3. Brent's method (inverse quadratic interpolation, secant, bisection) on the bracket.
- * The result is the chord root of the final bracket (width <= tol), with tau interpolated along
- * the chord, so T_c and tau are smooth functions of the inputs. */
+ * The result is that last Newton step's end, with tau carried along its derivative, or the chord
+ * root of the final bracket (width <= tol), with tau interpolated along the chord, so T_c and
+ * tau are smooth functions of the inputs between the points where the number of evaluations
+ * changes, and move by far less than tol there. */
 void hg_tc_solve(const hg_tc_problem *pb, hg_tau_fn tau_of_T, void *ctx, double T_warm,
                  hg_tc_result *res);
 
