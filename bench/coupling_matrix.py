@@ -6,6 +6,7 @@ communication step, in each scene, against a fine reference (docs/integration.md
         [--steps 1e-4 5e-4 1e-3 2e-3 5e-3 1e-2] [--scenes cruise tip launch downhill]
         [--hosts fmpy ecos libcosim] [--gear build/HypoidGearPair.fmu]
         [--vehicle build/LongitudinalVehicle.fmu] [--json OUT] [--label " (before)"]
+        [--gear-values friction_table=false]
     python bench/coupling_matrix.py --record OUT1.json [OUT2.json ...]   # the record's data
 
 Hosts: fmpy (tests/cosim/coupling_master.py's masters, every master) and, for the Jacobi master,
@@ -24,6 +25,7 @@ docs/records/coupling-matrix.json (`hypoid records coupling-matrix` writes its p
 matrix costs about 15 min of CPU per coupling."""
 
 import argparse
+import dataclasses
 import json
 import math
 import pathlib
@@ -78,7 +80,11 @@ def record(rows, steps, scenes, provenance):
                "fixed-step algorithms (Jacobi), with the integer-coded gear FMU; libcosim "
                "initialises inside its first step, so its cells are measured from t = h. "
                "`torque`: the connection before the half-shaft coupling (the gear's torque load "
-               "mode against the vehicle's half-shaft coupling 1)."}]
+               "mode against the vehicle's half-shaft coupling 1). `half_shaft (friction_table "
+               "off)`: the half-shaft coupling with the gear's friction solved at every "
+               "evaluation (friction_table = false) in the reference and the cells alike: the "
+               "coupling's own error, without the friction tables' keys, which move at the "
+               "steps' starts, and so at other instants at each step."}]
     for scene in scenes:
         keys = sorted({(r["coupling"], r["master"], r["host"]) for r in rows
                        if r["scene"] == scene},
@@ -99,6 +105,18 @@ def record(rows, steps, scenes, provenance):
     return {"provenance": provenance, "sections": blocks}
 
 
+def _value(arg):
+    """NAME=VALUE as (name, value): true / false as booleans, numbers as floats."""
+    name, text = arg.split("=", 1)
+    low = text.strip().lower()
+    if low in ("true", "false"):
+        return name, low == "true"
+    try:
+        return name, float(text)
+    except ValueError:
+        return name, text
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--couplings", nargs="+", default=["half_shaft", "torque"])
@@ -113,6 +131,9 @@ def main():
     ap.add_argument("--reference-vehicle")
     ap.add_argument("--json", help="write the cells' measures")
     ap.add_argument("--label", default="", help="appended to the coupling's name in the cells")
+    ap.add_argument("--gear-values", nargs="+", default=[], metavar="NAME=VALUE",
+                    help="the gear's start values in the references and the cells alike "
+                         "(true / false, numbers, else text)")
     ap.add_argument("--record", nargs="+", metavar="JSON",
                     help="write docs/records/coupling-matrix.json from these --json files "
                     "(no runs); then `hypoid records coupling-matrix` writes the page")
@@ -133,6 +154,12 @@ def main():
         out = ROOT / "docs" / "records" / "coupling-matrix.json"
         out.write_text(json.dumps(data, indent=1, ensure_ascii=False) + "\n")
         return 0
+    try:
+        gear_values = dict(_value(a) for a in args.gear_values)
+    except ValueError:
+        print(f"coupling_matrix: --gear-values takes NAME=VALUE, not {args.gear_values}",
+              file=sys.stderr)
+        return 2
     hosts = []
     for host in args.hosts:
         why = HOSTS[host] and HOSTS[host][1]()
@@ -144,6 +171,7 @@ def main():
     rows = []
     for name in args.scenes:
         scene = cm.SCENES[name]
+        scene = dataclasses.replace(scene, gear={**scene.gear, **gear_values})
         refs = {}
         for h in args.steps:
             refs[h] = reference(scene, args.reference_gear or args.gear,

@@ -211,6 +211,7 @@ static void begin_inputs(hg_model *m, const hg_vars *v, const hg_inputs *du, dou
     double f_old[HG_NY], f_new[HG_NY];
     int rebuild, keep;
     hg_vars_inputs(v, &u);
+    hg_stepping_wheel_correct(rt, &m->s, &u);
     hg_stepping_wheel_input(rt, &m->s, &u, &du_in);
     du = &du_in;
     change = hg_stepping_change(rt, &u, du);

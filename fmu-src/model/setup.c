@@ -393,6 +393,7 @@ static void dynamics_params(hg_setup *s, const hg_vars *v)
     p->half_shaft = v->load_mode == HG_LOAD_MODE_HALF_SHAFT;
     p->k_hs = p->half_shaft ? v->k_hs : 0.0; /* no spring energy unless it acts */
     p->c_hs = p->half_shaft ? v->c_hs : 0.0;
+    s->I_vehicle = p->half_shaft ? v->I_vehicle : 0.0;
     /* PI governor on the wheel speed, tuned on the rigid-body inertia seen at the wheel */
     J = (v->I_s + v->I_p) * p->ratio * p->ratio + v->I_g + v->I_w;
     w_n = HG_TWO_PI * v->governor_bandwidth;

@@ -33,6 +33,8 @@ typedef struct {
     long jac_every;       /* most steps between CVODE's Jacobians (0: its own); see jac_every */
     double f_max;         /* highest natural frequency of the linearised system [Hz] */
     double window_angle;  /* pinion angle of one averaging window [rad] */
+    double I_vehicle;     /* load_mode = half_shaft: the vehicle's inertia at the wheels, over
+                             which the wheel speed is corrected (0: not) [kg m^2] */
 } hg_setup;
 
 /* Fills s from the parameters of v (data files relative to resource_dir) and writes the

@@ -98,6 +98,19 @@ void hg_stepping_wheel_input(hg_runtime *rt, const hg_setup *s, hg_inputs *u, hg
     rt->w_wheel_last = u->w_wheel;
 }
 
+void hg_stepping_wheel_correct(hg_runtime *rt, const hg_setup *s, hg_inputs *u)
+{
+    const hg_dyn_params *p = &s->p;
+    double h_before = rt->t - rt->t_u0; /* the step that just ended (0 before the first) */
+    if (!p->half_shaft) return;
+    if (h_before > 0.0) rt->imp_given += rt->T_wheel_given * h_before;
+    /* before the first step T_wheel is the half-shaft's torque at the start, T_w_out */
+    rt->T_wheel_given = hg_stepping_wheel_torque(
+        rt, p->k_hs * rt->y[HG_Y_TWIST_HS] + p->c_hs * (rt->y[HG_Y_W_W] - rt->u0.w_wheel));
+    if (s->I_vehicle > 0.0 && (rt->wheel_given || u->w_wheel != 0.0))
+        u->w_wheel -= (rt->imp_given - rt->y[HG_Y_IMP_W]) / s->I_vehicle;
+}
+
 double hg_stepping_wheel_torque(const hg_runtime *rt, double T_w_now)
 {
     double h = rt->t - rt->t_u0, mean;

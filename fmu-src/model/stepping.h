@@ -27,6 +27,9 @@ typedef struct {
     int wheel_given;               /* w_wheel has been set to something but 0 since the start */
     double w_wheel0;               /* the wheel speed taken until then: w_p0 / i [rad/s] */
     double w_wheel_last;           /* the w_wheel of the step before [rad/s] */
+    double T_wheel_given;          /* T_wheel as the host read it before the current step [N m] */
+    double imp_given;              /* T_wheel's impulse over the steps so far, held over each:
+                                      what a Jacobi host has passed to the wheels [N m s] */
     double h_int;                  /* mean integrator step of the last step [s]: the first step
                                       of the explicit method's restarts */
     double win_phi0, win_t0;       /* start of the averaging window: pinion angle, time */
@@ -50,6 +53,14 @@ void hg_stepping_start(hg_runtime *rt, const hg_setup *s, const hg_vars *v, doub
  * linearly from the last two steps' values (du), so that the wheel's angle the half-shaft sees
  * is second-order in the step instead of lagging by h/2 times the change of speed. */
 void hg_stepping_wheel_input(hg_runtime *rt, const hg_setup *s, hg_inputs *u, hg_inputs *du);
+
+/* load_mode = half_shaft, a co-simulation step's start, before hg_stepping_wheel_input: adds the
+ * impulse of T_wheel held over the step that ended to what the wheels have been given, takes the
+ * T_wheel the host now reads as held over the coming step, and, with I_vehicle set and the wheel
+ * speed given, takes from the host's w_wheel the speed that the impulse passed ahead of the
+ * half-shaft's own (given minus HG_Y_IMP_W) has added to the vehicle's inertia: the wheel speed
+ * the vehicle would have had with the half-shaft's exact impulse (docs/integration.md). */
+void hg_stepping_wheel_correct(hg_runtime *rt, const hg_setup *s, hg_inputs *u);
 
 /* The torque to hold at the vehicle's wheels over the next step (output T_wheel): the mean of
  * T_w over the last step extrapolated linearly over one step from the mean of the step before, so

@@ -112,7 +112,11 @@ RECORDS = {r.name: r for r in [
            "and iterative masters at 0.1-10 ms, against a fine reference",
            ("coupling-matrix.json",),
            "python bench/coupling_matrix.py --json build/records/cm.json && "
-           "python bench/coupling_matrix.py --record build/records/cm.json",
+           "python bench/coupling_matrix.py --couplings half_shaft --masters jacobi "
+           "--hosts fmpy --scenes cruise tip --gear-values friction_table=false "
+           "--label ' (friction_table off)' --json build/records/cm-direct.json && "
+           "python bench/coupling_matrix.py --record build/records/cm.json "
+           "build/records/cm-direct.json",
            R + "pages:tables_page"),
     Record("cosimulation", "The gear FMU in a co-simulation: energy, stability, hosts",
            "the coupling's energy residual per step, the Jacobi coupling's growth rates, the "

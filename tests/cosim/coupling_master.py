@@ -8,7 +8,8 @@ Couplings (the connection a host makes):
               interface, the small wheel-end inertia I_w on the gear's side)
   half_shaft  gear load_mode = half_shaft, vehicle coupling 3: the gear integrates the half-shaft
               (k_hs, c_hs) and gives its torque T_w_out -> vehicle T_wheel; the vehicle's wheel
-              speed w_wheel (a state of its large inertia) -> gear w_wheel
+              speed w_wheel (a state of its large inertia) -> gear w_wheel; the gear's I_vehicle
+              the shipped vehicle's inertia at its wheels (its default m, r_dyn and J_wheels)
 
 Masters, every input held over the communication step:
   jacobi        both FMUs step with the outputs of the step's start (libcosim, Ecos, the FMU
@@ -28,6 +29,7 @@ ITERATIONS = 3
 RPM = math.pi / 30.0
 RATIO = 36.0 / 13.0
 R_DYN = 0.3
+I_VEHICLE = 1500.0 * R_DYN ** 2 + 3.0  # kg.m2: the shipped vehicle's m r_dyn^2 + J_wheels
 
 GEAR_OUT = ["w_p", "w_w", "W_t", "T_w_out", "E_in", "E_out", "E_friction", "E_damping",
             "E_excitation", "E_stored"]
@@ -38,7 +40,7 @@ COUPLINGS = {
     "torque": {"gear": {"load_mode": 1}, "vehicle": {"coupling": 1},
                # (from FMU, output, to FMU, input)
                "links": [("vehicle", "T_hs", "gear", "T_w"), ("gear", "w_w", "vehicle", "w_w")]},
-    "half_shaft": {"gear": {"load_mode": 3}, "vehicle": {"coupling": 3},
+    "half_shaft": {"gear": {"load_mode": 3, "I_vehicle": I_VEHICLE}, "vehicle": {"coupling": 3},
                    "links": [("gear", "T_wheel", "vehicle", "T_wheel"),
                              ("vehicle", "w_wheel", "gear", "w_wheel")]},
 }
