@@ -36,8 +36,9 @@ MAP_T_MIN = builtin_map_range()[0]
 # one is placed deliberately.
 REACHES_EVERY_LEVEL = frozenset({
     "gear_set", "lubricant", "load_mode", "solver", "rtol", "atol", "max_step",
-    "steps_per_mesh_cycle", "I_s", "I_p", "I_g", "I_w", "k_t1", "k_t2", "k_hs", "c_hs", "zeta_2",
-    "zeta_3", "zeta_4", "w_p0", "governor_bandwidth", "n_avg_cycles", "axle_losses",
+    "steps_per_mesh_cycle", "I_s", "I_p", "I_g", "I_w", "k_t1", "k_t2", "k_hs", "c_hs",
+    "I_vehicle", "zeta_2", "zeta_3", "zeta_4", "w_p0", "governor_bandwidth", "n_avg_cycles",
+    "axle_losses",
     "thermal_model", "ring_d", "ring_b", "r_m_p", "r_m_g", "delta_p", "delta_g", "beta_p",
     "beta_g", "alpha_n", "oil_level", "V_oil", "brg_ph_d", "brg_ph_D", "brg_ph_Y", "brg_ph_x",
     "brg_pt_d", "brg_pt_D", "brg_pt_Y", "brg_pt_x", "brg_gn_d", "brg_gn_D", "brg_gn_Y",

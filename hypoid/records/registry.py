@@ -113,7 +113,7 @@ RECORDS = {r.name: r for r in [
            ("coupling-matrix.json",),
            "python bench/coupling_matrix.py --json build/records/cm.json && "
            "python bench/coupling_matrix.py --couplings half_shaft --masters jacobi "
-           "--hosts fmpy --scenes cruise tip --gear-values friction_table=false "
+           "--hosts fmpy --gear-values friction_table=false "
            "--label ' (friction_table off)' --json build/records/cm-direct.json && "
            "python bench/coupling_matrix.py --record build/records/cm.json "
            "build/records/cm-direct.json",

@@ -134,40 +134,46 @@ def half_shaft_system(p, vehicle=VEHICLE):
     return A, B, C, -c
 
 
-def half_shaft_map(p, h, vehicle=VEHICLE):
+def half_shaft_map(p, h, vehicle=VEHICLE, I_vehicle=0.0):
     """The one-step Jacobi map of the half-shaft coupling as the FMUs run it: the gear holds
     w_wheel extrapolated linearly from the last two values (1.5 w_k - 0.5 w_k-1 on average over
     the step), the vehicle holds T_wheel = 2 Tbar_k - Tbar_k-1 (the gear's mean half-shaft torque
     over the last step, extrapolated), and integrates J_v w_wheel' = T_wheel (road load left
-    out). State: (gear x with the impulse reset each step, w_wheel, w_wheel of the step before,
-    Tbar_k, Tbar_k-1)."""
+    out). With I_vehicle > 0 the gear takes E / I_vehicle from each w_wheel it receives, E the
+    impulse given through T_wheel less its own (E += h (T_wheel - Tbar) each step). State:
+    (gear x with the impulse reset each step, w_wheel, the corrected w_wheel of the step before,
+    Tbar_k, Tbar_k-1, E)."""
     A, B, _, _ = half_shaft_system(p, vehicle)
     F, G = held(A, B, h)
     J_v = vehicle["m"] * vehicle["r_dyn"] ** 2 + vehicle["J_wheels"]
     n = A.shape[0]
-    iw, iwp, itb, itbp = n, n + 1, n + 2, n + 3
-    P = np.zeros((n + 4, n + 4))
-    w_in = np.zeros(n + 4)
-    w_in[iw], w_in[iwp] = 1.5, -0.5
-    u = np.zeros(n + 4)
+    iw, iwc, itb, itbp, ie = n, n + 1, n + 2, n + 3, n + 4
+    P = np.zeros((n + 5, n + 5))
+    w_c = np.zeros(n + 5)                            # the corrected wheel speed of this step
+    w_c[iw], w_c[ie] = 1.0, -1.0 / I_vehicle if I_vehicle > 0.0 else 0.0
+    w_in = 1.5 * w_c
+    w_in[iwc] -= 0.5
+    u = np.zeros(n + 5)
     u[itb], u[itbp] = 2.0, -1.0
-    X = np.zeros((n, n + 4))
+    X = np.zeros((n, n + 5))
     X[:, :n] = F
     X[:, n - 1] = 0.0                                # the impulse starts from 0 each step
     X += np.outer(G[:, 0], w_in)
     P[:n - 1] = X[:n - 1]
     P[iw, iw] = 1.0
     P[iw] += u * h / J_v
-    P[iwp, iw] = 1.0
+    P[iwc] = w_c
     P[itb] = X[n - 1] / h
     P[itbp, itb] = 1.0
+    P[ie, ie] = 1.0
+    P[ie] += h * (u - P[itb])
     return P
 
 
-def half_shaft_rate(p, h, vehicle=VEHICLE):
+def half_shaft_rate(p, h, vehicle=VEHICLE, I_vehicle=0.0):
     """(growth rate 1/s, frequency Hz) of the least damped mode of half_shaft_map, the rigid
-    rotation (eigenvalues at 1) left out."""
-    mu = np.linalg.eigvals(half_shaft_map(p, h, vehicle))
+    rotation and the uncorrected E (eigenvalues at 1) left out."""
+    mu = np.linalg.eigvals(half_shaft_map(p, h, vehicle, I_vehicle))
     mu = mu[(np.abs(mu) > 1e-12) & (np.abs(mu - 1.0) > 1e-4)]
     lam = np.log(mu.astype(complex)) / h
     k = np.argmax(lam.real)
