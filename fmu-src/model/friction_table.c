@@ -160,26 +160,42 @@ static void fill_ghosts(hg_friction_table *t)
     memcpy(t->c[HG_FT_N_PSI + 2], t->c[2], sizeof t->c[0]);
 }
 
+/* ln mu at a drift d (0: w_p, 1: w_g, 2: T) of the point, its T_c solve warm-started from the
+ * key's T_c there plus the shift the drift gave at the previous point of the path (shift[d],
+ * updated): a step along the path changes that shift by a few per cent, so the solve starts
+ * within about 1e-3 K of its root. */
+static double ln_mu_drift(const hg_friction_config *cfg, const table_point *q, double w_p,
+                          double w_g, double T_bath, double T_c, double *shift)
+{
+    double warm = T_c + *shift, L = ln_mu(cfg, q, w_p, w_g, T_bath, &warm);
+    *shift = warm - T_c;
+    return L;
+}
+
 /* The drift derivatives of ln mu at one node e (its channels) by forward differences from
  * e[HG_FT_CH_L] (steps small enough that their one-sided error, half a step's curvature, stays
  * a few per cent of the window's own): per rad/s of w_p and of w_g, or, when the gear speed
  * follows the pinion's (gear_follows: w_g = w_p w_g / w_p), one derivative along that line in
- * the w_p channel and none in w_g; per K of T. */
+ * the w_p channel and none in w_g; per K of T. T_c: the key's conjunction temperature there;
+ * shift: as ln_mu_drift's, per drift. */
 static void drift_slopes(double *e, const hg_ft_key *k, const hg_friction_config *cfg,
-                         const table_point *q, int gear_follows, double *warm)
+                         const table_point *q, int gear_follows, double T_c, double shift[3])
 {
     double L0 = e[HG_FT_CH_L], T = k->T_bath;
     double dw_p = FD_SPEED * fmax(fabs(k->w_p), HG_FT_SPEED_MIN);
     double dw_g = FD_SPEED * fmax(fabs(k->w_g), HG_FT_SPEED_MIN);
     double along = k->w_p != 0.0 ? dw_p * k->w_g / k->w_p : 0.0;
     if (gear_follows) {
-        e[HG_FT_CH_WP] = (ln_mu(cfg, q, k->w_p + dw_p, k->w_g + along, T, warm) - L0) / dw_p;
+        e[HG_FT_CH_WP] =
+            (ln_mu_drift(cfg, q, k->w_p + dw_p, k->w_g + along, T, T_c, &shift[0]) - L0) / dw_p;
         e[HG_FT_CH_WG] = 0.0;
     } else {
-        e[HG_FT_CH_WP] = (ln_mu(cfg, q, k->w_p + dw_p, k->w_g, T, warm) - L0) / dw_p;
-        e[HG_FT_CH_WG] = (ln_mu(cfg, q, k->w_p, k->w_g + dw_g, T, warm) - L0) / dw_g;
+        e[HG_FT_CH_WP] =
+            (ln_mu_drift(cfg, q, k->w_p + dw_p, k->w_g, T, T_c, &shift[0]) - L0) / dw_p;
+        e[HG_FT_CH_WG] =
+            (ln_mu_drift(cfg, q, k->w_p, k->w_g + dw_g, T, T_c, &shift[1]) - L0) / dw_g;
     }
-    e[HG_FT_CH_T] = (ln_mu(cfg, q, k->w_p, k->w_g, T + FD_T, warm) - L0) / FD_T;
+    e[HG_FT_CH_T] = (ln_mu_drift(cfg, q, k->w_p, k->w_g, T + FD_T, T_c, &shift[2]) - L0) / FD_T;
 }
 
 void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg,
@@ -192,16 +208,17 @@ void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg
     t->usable = 1;
     for (j = 0; j < HG_FT_N_L; j++) {
         double W = key->W_max * exp(LN_W_SPAN * (1.0 - (double)j / (HG_FT_N_L - 1))), warm = NAN;
+        double shift[3] = {0.0, 0.0, 0.0}, step = 0.0;
         for (i = 0; i < HG_FT_N_PSI; i++) { /* along the path: each solve warm-starts the next */
             hg_pair_point pt;
             table_point q;
-            double w0, *e = t->c[i + 1][j + 1];
+            double *e = t->c[i + 1][j + 1], before = warm;
             hg_gearset_pair_point(g, flank, level, HG_TWO_PI * i / HG_FT_N_PSI, &pt);
             point_at(cfg, &pt, W, key, &q);
+            warm += step; /* the last step along the path continued */
             e[HG_FT_CH_L] = ln_mu(cfg, &q, key->w_p, key->w_g, key->T_bath, &warm);
-            w0 = warm;
-            drift_slopes(e, key, cfg, &q, gear_follows, &warm);
-            warm = w0;
+            step = i > 0 ? warm - before : 0.0;
+            drift_slopes(e, key, cfg, &q, gear_follows, warm, shift);
             if (!(e[HG_FT_CH_L] <= log(HG_FT_MU_MAX))) t->usable = 0;
         }
     }
