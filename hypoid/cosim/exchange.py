@@ -10,10 +10,11 @@ FMUs' nominals, root finding on the gear's event indicators) through hypoid.fmu.
 gear and vehicle are structured arrays (a 'time' field and the named outputs), as
 hypoid.fmu.instance.Instance.series gives."""
 
+from hypoid.cosim.master import Pair
 from hypoid.fmu.exchange import Exchange, ExchangeInstance
 
 
-class GearVehicleExchange:
+class GearVehicleExchange(Pair):
     """Two Model Exchange instances, `gear` and `vehicle`, started with their start values and
     the inputs of the connections consistent at the start; torque(t) the gear's T_s [N m]."""
 
@@ -47,13 +48,3 @@ class GearVehicleExchange:
     @property
     def events(self):
         return self.exchange.events
-
-    def close(self):
-        self.gear.close()
-        self.vehicle.close()
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()

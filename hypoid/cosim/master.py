@@ -44,7 +44,21 @@ def ramp_slope(a, b, h, lo=-math.inf, hi=math.inf):
     return slope
 
 
-class GearVehicle:
+class Pair:
+    """Two FMU instances, `gear` and `vehicle`, closed together (also as a context manager)."""
+
+    def close(self):
+        self.gear.close()
+        self.vehicle.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+
+class GearVehicle(Pair):
     """Two instances, `gear` and `vehicle`; step() returns the outputs (gear_out, vehicle_out) as
     lists of floats in the order given. A wheel speed below `w_rest` (rad/s) reaches the vehicle as
     0, so that a standing car's brakes and rolling resistance hold it with a constant torque
@@ -134,12 +148,3 @@ class GearVehicle:
         self.outputs = g, self._v_io.reals()
         return self.outputs
 
-    def close(self):
-        self.gear.close()
-        self.vehicle.close()
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
