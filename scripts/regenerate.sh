@@ -6,7 +6,7 @@
 # reference results (extra/org.fmi-standard.fmi-ls-ref/, tools/fmi_ls_ref.py), and the records
 # that depend on them (docs/records/: the level table and the axle's loss map; `hypoid records
 # --list` names the others, each remade by `hypoid records --measure NAME`). Niced; the maps
-# take about 3 min each with two workers.
+# take about 8 min each with two workers (their speeds banded through the mesh resonances).
 #
 #   scripts/regenerate.sh                  # all of it
 #   scripts/regenerate.sh maps regress     # only the named parts (maps, regress, levels, lossmap)

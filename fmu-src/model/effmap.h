@@ -28,7 +28,10 @@ typedef struct {
     double T[HG_MAP_MAX_AXIS]; /* pinion torques [N m], ascending, >= 0 */
     double K[HG_MAP_MAX_AXIS]; /* bath temperatures [K], ascending */
     double *eta;               /* [direction][K][w][T], in (0, 1] */
-    double *M_w, *M_T, *M_K;   /* per axis: node values -> spline second derivatives (n x n) */
+    double *D;                 /* [8][direction][K][w][T]: eta with the spline's second
+                                * derivative taken along the axes of each bit set (speed 1,
+                                * torque 2, temperature 4): an evaluation reads the 2 x 2 x 2
+                                * nodes around the point only */
 } hg_effmap;
 
 int hg_effmap_load(const char *path, hg_effmap *map, char *err, size_t errlen);

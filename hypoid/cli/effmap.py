@@ -3,7 +3,7 @@
 
     hypoid effmap --out my_map.txt --gear-set-file my_set.txt --lubricant-file my_oil.txt
     hypoid effmap --out my_map.txt --gear-set 2 --set k_f=0.15 --speeds-rpm 500:5000:500
-    hypoid effmap --all --out-dir resources/maps            (the built-in maps, ~8 min)
+    hypoid effmap --all --out-dir resources/maps            (the built-in maps, ~50 min)
 
 Each point runs the full model (varying mesh, ehl_thermal friction unless --set says otherwise)
 at a held pinion speed, a pinion torque and a bath temperature, in drive (T_s > 0) and coast
@@ -23,8 +23,8 @@ import pathlib
 
 from hypoid.cli import args as cliargs
 from hypoid.fmu.values import TABLE
-from hypoid.maps.effmap import (LUBRICANTS, QUICK_GRID, SET_BY_THE_MAP, SPEEDS_RPM,
-                                TEMPERATURES_C, TORQUES, write_map)
+from hypoid.maps.effmap import (BANDED, LUBRICANTS, QUICK_GRID, SET_BY_THE_MAP, TEMPERATURES_C,
+                                TORQUES, write_map)
 from hypoid.paths import data_file, user_path
 
 
@@ -37,8 +37,9 @@ def _parser():
     ap.add_argument("--lubricant", type=int, help="built-in lubricant 1-2 (default 1)")
     ap.add_argument("--lubricant-file", help="a lubricant data file of your own")
     ap.add_set()
-    ap.add_argument("--speeds-rpm", help=f"pinion speeds, a:b:step or v1,v2,... (default "
-                                         f"{','.join(map(str, SPEEDS_RPM))})")
+    ap.add_argument("--speeds-rpm", help="pinion speeds, a:b:step or v1,v2,... (default: "
+                                         "banded through the gear set's mesh resonances, "
+                                         "hypoid/maps/speedgrid.py)")
     ap.add_argument("--torques", help=f"pinion torques [N.m] (default "
                                       f"{','.join(map(str, TORQUES))})")
     ap.add_argument("--temperatures-c", help=f"bath temperatures [°C] (default "
@@ -90,7 +91,7 @@ def main(argv):
     args = _parser().parse_args(argv)
     fmu = cliargs.fmu_path(args.fmu)
     grid = QUICK_GRID if args.quick else (
-        axis("--speeds-rpm", args.speeds_rpm, SPEEDS_RPM, 0.0),
+        BANDED if args.speeds_rpm is None else axis("--speeds-rpm", args.speeds_rpm, None, 0.0),
         axis("--torques", args.torques, TORQUES, 0.0),
         axis("--temperatures-c", args.temperatures_c, TEMPERATURES_C, -273.15))
     if args.all:

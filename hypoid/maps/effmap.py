@@ -10,14 +10,20 @@ import time
 
 from hypoid.errors import UsageError
 from hypoid.fmu import parallel
-from hypoid.fmu.instance import unzipped
+from hypoid.fmu.instance import Instance, unzipped
 from hypoid.fmu.values import RPM, TABLE
 from hypoid.fmu.variables import MODEL_VERSION
+from hypoid.maps import speedgrid
 from hypoid.tca.gearset_file import read_gearset
 
 MAGIC = "hypoid-effmap 2"
-SPEEDS_RPM = [100, 250, 500, 1000, 1500, 2000, 3000, 4000, 5000, 6000]
-TORQUES = [10, 25, 50, 100, 200, 300, 400]
+# The speeds: by default banded per gear set through its mesh resonances (hypoid/maps/speedgrid.py,
+# on the base speeds speedgrid.BASE_SPEEDS_RPM); a grid given as numbers is taken as it is.
+BANDED = None
+# The torques: a mesh resonance's speed rises with the load (the contact stiffens), by about a
+# tenth of itself from 50 to 100 N.m and again to 200 N.m (speedgrid.mode_speeds), so the nodes at
+# 75 and 150 N.m keep a ridge's shift from one torque node to the next within about its width.
+TORQUES = [10, 25, 50, 75, 100, 150, 200, 300, 400]
 # from a cold start in winter (the EU's -7 degC test, -20 and -30 degC) to a hot axle's sump
 TEMPERATURES_C = [-30, -15, 0, 20, 40, 70, 100, 130, 150]
 QUICK_GRID = ([500, 2000, 4000], [50, 100, 200], [40, 100])
@@ -174,9 +180,22 @@ def coast_flank_text(gear_set_path):
     return "Coast uses the drive flank's contact data for the coast flank (no coast TCA data)."
 
 
+def map_speeds(fmu, params, grid):
+    """The grid with its speeds [rpm] made: as given, or banded through the gear set's mesh
+    resonances (speedgrid); and the line the map's header says about them."""
+    speeds, torques, temperatures_c = grid
+    if speeds is not BANDED:
+        return grid, "Speeds: as given."
+    with Instance(str(fmu)) as inst:
+        speeds, bands, step = speedgrid.speed_grid(inst, params,
+                                                   source_files(fmu, params)["gear_set"], torques)
+    return (speeds, torques, temperatures_c), speedgrid.describe(bands, step)
+
+
 def write_map(fmu, out, params, workers, grid, command):
     t0 = time.time()
     keys = provenance_keys(fmu, params)  # before the long run: a missing file fails at once
+    grid, speeds_text = map_speeds(fmu, params, grid)
     etas = compute_map(str(fmu), params, *grid, workers)
     bad = [e for e in etas if not 0.0 < e <= 1.0]
     if bad:
@@ -188,6 +207,7 @@ def write_map(fmu, out, params, workers, grid, command):
         "eta = 1 - dE_friction/dE_in (coast: T_s < 0, the wheel drives, "
         "eta = 1 - dE_friction/(-dE_out)).",
         coast_flank_text(source_files(fmu, params)["gear_set"]),
+        speeds_text,
         f"{len(etas)} points in {time.time() - t0:.0f} s.",
     ]
     name = "full-model map: " + (", ".join(f"{k}={pathlib.Path(str(v)).name}"

@@ -137,7 +137,7 @@ static void test_rigid_mesh(void)
  * above the spin regularisation). */
 static void test_map_level_quasi_static_input(void)
 {
-    static double eta[16], M[4];
+    static double eta[16], D[8 * 16]; /* D[0]: the table; the second derivatives: none */
     static const double axis[3][2] = {{0.0, 600.0}, {0.0, 500.0}, {250.0, 450.0}};
     hg_dyn_params p = params(HG_MESH_MODEL_RIGID);
     hg_effmap map;
@@ -147,13 +147,13 @@ static void test_map_level_quasi_static_input(void)
     hg_dyn_eval ev;
     int k;
     memset(&map, 0, sizeof map);
-    for (k = 0; k < 16; k++) eta[k] = 0.9;
+    for (k = 0; k < 16; k++) eta[k] = D[k] = 0.9;
     map.n_w = map.n_T = map.n_K = 2;
     memcpy(map.w, axis[0], sizeof axis[0]);
     memcpy(map.T, axis[1], sizeof axis[1]);
     memcpy(map.K, axis[2], sizeof axis[2]);
     map.eta = eta;
-    map.M_w = map.M_T = map.M_K = M; /* two nodes: no curvature */
+    map.D = D; /* two nodes: no curvature */
     p.friction.model = HG_FRICTION_MODEL_MAP;
     p.quasi_static_input = 1; /* input_shaft = auto at the map level */
     p.map = &map;

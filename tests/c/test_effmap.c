@@ -69,6 +69,58 @@ static void interpolation(void)
     hg_effmap_free(&m);
 }
 
+/* A textbook natural cubic spline through (x, y) at `at` (second derivatives from the
+ * tridiagonal system, Thomas algorithm), held beyond the ends: the independent reference. */
+static double natural_spline(const double *x, const double *y, int n, double at)
+{
+    double m[8] = {0}, c[8] = {0}, d[8] = {0}, h, a, b;
+    int i;
+    if (at <= x[0]) return y[0];
+    if (at >= x[n - 1]) return y[n - 1];
+    for (i = 1; i < n - 1; i++) {
+        double h0 = x[i] - x[i - 1], h1 = x[i + 1] - x[i];
+        double rhs = 6.0 * ((y[i + 1] - y[i]) / h1 - (y[i] - y[i - 1]) / h0);
+        double diag = 2.0 * (h0 + h1) - h0 * c[i - 1];
+        c[i] = h1 / diag;
+        d[i] = (rhs - h0 * d[i - 1]) / diag;
+    }
+    for (i = n - 2; i >= 1; i--) m[i] = d[i] - c[i] * m[i + 1];
+    for (i = 0; at >= x[i + 1]; i++) {}
+    h = x[i + 1] - x[i];
+    a = (x[i + 1] - at) / h;
+    b = 1.0 - a;
+    return a * y[i] + b * y[i + 1] + h * h / 6.0 * ((a * a * a - a) * m[i] + (b * b * b - b) * m[i + 1]);
+}
+
+static double gw(int a) { return 0.97 + 0.01 * sin(2.0 * a); }
+static double gt(int b) { return 0.99 + 0.005 * cos(1.3 * b + 0.4); }
+static double gk(int c) { return 1.0 - 0.003 * c; }
+static double product(int d, int a, int b, int c) { return (d ? 0.999 : 1.0) * gw(a) * gt(b) * gk(c); }
+
+/* Data that are a product of one function per axis: the tensor-product spline is the product of
+ * the three one-axis splines, at any point inside and beyond the grid. */
+static void tensor_product(void)
+{
+    hg_effmap m;
+    char err[HG_ERRLEN] = "";
+    double yw[4], yt[3], yk[2], w, t, k;
+    int i;
+    for (i = 0; i < 4; i++) yw[i] = gw(i);
+    for (i = 0; i < 3; i++) yt[i] = gt(i);
+    for (i = 0; i < 2; i++) yk[i] = gk(i);
+    write_map(product, NULL);
+    CHECK(hg_effmap_load(PATH, &m, err, sizeof err) == 0);
+    for (w = 3; w <= 330; w += 17.3)
+        for (t = 4; t <= 110; t += 8.9)
+            for (k = 290; k <= 360; k += 11.0) {
+                double want = natural_spline(W, yw, 4, w) * natural_spline(T, yt, 3, t) *
+                              natural_spline(K, yk, 2, k);
+                CHECK_CLOSE(hg_effmap_eta(&m, HG_MAP_DRIVE, w, t, k), want, 1e-14, 0);
+                CHECK_CLOSE(hg_effmap_eta(&m, HG_MAP_COAST, w, t, k), 0.999 * want, 1e-14, 0);
+            }
+    hg_effmap_free(&m);
+}
+
 static void expect_error(const char *speeds, double (*f)(int, int, int, int), const char *want)
 {
     hg_effmap m;
@@ -121,6 +173,7 @@ static void content_hash(void)
 int main(void)
 {
     interpolation();
+    tensor_product();
     provenance();
     content_hash();
     expect_error("speeds 10 100 50 300", wiggly, "ascending");

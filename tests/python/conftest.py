@@ -38,6 +38,7 @@ SLOW_TESTS = {
     "test_generated_docs.py::test_a_changed_figure_fails_the_check",
     "test_mesh_law.py::test_dte_against_the_reference_model",
     "test_coupling.py::test_ecos_stops_where_an_fmu_refuses_its_input",
+    "test_map_speedgrid.py::test_the_full_models_ridge_lies_in_its_band_and_the_map_follows_it",
 }
 QUICK_FROM_SLOW = {
     "test_robustness_inputs.py::test_impossible_axle_and_oil_data_fail_naming_the_variable",
