@@ -59,12 +59,27 @@ static unsigned u16(input *in) { return u8(in) | u8(in) << 8; }
 
 static uint32_t u32(input *in) { return (uint32_t)u16(in) | (uint32_t)u16(in) << 16; }
 
+static uint64_t raw_bits(input *in)
+{
+    uint64_t low = u32(in);
+    return low | (uint64_t)u32(in) << 32;
+}
+
 static double raw_double(input *in)
 {
-    uint64_t bits = (uint64_t)u32(in) | (uint64_t)u32(in) << 32;
+    uint64_t bits = raw_bits(in);
     double d;
     memcpy(&d, &bits, sizeof d);
     return d;
+}
+
+/* Any 64-bit integer (a double's conversion would be undefined for NaN and out-of-range values) */
+static int64_t raw_int64(input *in)
+{
+    uint64_t bits = raw_bits(in);
+    int64_t i;
+    memcpy(&i, &bits, sizeof i);
+    return i;
 }
 
 /* A typical value most of the time, raw bits otherwise. */
@@ -252,7 +267,7 @@ static fmi3Status access3(slot3 *s, input *in, int set)
     for (k = 0; set && k < 32; k++) {
         r[k] = value(in);
         i32[k] = (fmi3Int32)(int8_t)u8(in);
-        i64[k] = u8(in) < 250 ? (fmi3Int64)(u8(in) % 6) : (fmi3Int64)raw_double(in);
+        i64[k] = u8(in) < 250 ? (fmi3Int64)(u8(in) % 6) : (fmi3Int64)raw_int64(in);
         b[k] = u8(in) & 1;
         str[k] = u8(in) < 8 ? NULL : "";
     }
