@@ -57,7 +57,8 @@ void hg_trb_pair_axial(double Fr_1, double Y_1, double Fr_2, double Y_2, double 
 
 double hg_trb_phi_rs(double K_rs, double vn, double rs)
 {
-    return exp(-K_rs * vn * rs); /* K_rs = 0, a flooded bearing: 1 */
+    /* K_rs = 0, a flooded bearing: exp(-0) = 1 exactly, without the exp */
+    return K_rs == 0.0 ? 1.0 : exp(-K_rs * vn * rs);
 }
 
 void hg_trb_geometry_of(const hg_trb *b, hg_trb_geometry *g)

@@ -12,35 +12,50 @@ double hg_churn_submerged_area(double R_p, double b, double h)
     return R_p * R_p * (2.0 * theta - sin(2.0 * theta)) + 2.0 * R_p * b * theta;
 }
 
-/* ln C_m of the two regimes */
-static double ln_cm_low(double h_D, double V_D3, double Fr, double Re)
+void hg_churn_terms_of(const hg_churn_geom *g, hg_churn_terms *t)
 {
-    return log(1.366) + 0.45 * log(h_D) + 0.1 * log(V_D3) - 0.6 * log(Fr) - 0.21 * log(Re);
+    double D_p = 2.0 * g->R_p;
+    double h_D = g->h / D_p, V_D3 = g->V_0 / (D_p * D_p * D_p), b_D = g->b / D_p;
+    t->S_m = hg_churn_submerged_area(g->R_p, g->b, g->h);
+    t->R3 = g->R_p * g->R_p * g->R_p;
+    /* ln C_low = ln_low0 - 0.6 ln Fr - 0.21 ln Re, ln C_high = ln_high0 - 0.88 ln Fr + ln_high_b */
+    t->ln_low0 = log(1.366) + 0.45 * log(h_D) + 0.1 * log(V_D3);
+    t->ln_low_re_c = 0.21 * log(RE_C * g->b / g->h); /* the 0.21 ln Re where the regime ends */
+    t->ln_high0 = log(3.644) + 0.1 * log(h_D) - 0.35 * log(V_D3);
+    t->ln_high_b = 0.85 * log(b_D);
 }
 
-static double ln_cm_high(double h_D, double V_D3, double Fr, double b_D)
+double hg_churn_cm_at(const hg_churn_geom *g, const hg_churn_terms *t, double nu, double omega)
 {
-    return log(3.644) + 0.1 * log(h_D) - 0.35 * log(V_D3) - 0.88 * log(Fr) + 0.85 * log(b_D);
+    double Fr = omega * omega * g->R_p / HG_G;
+    double Re = omega * g->R_p * g->b / nu;
+    double Re_c = omega * g->R_p * g->h / nu;
+    double ln_Fr = log(Fr);
+    if (Re_c <= RE_C) return exp(t->ln_low0 - 0.6 * ln_Fr - 0.21 * log(Re));
+    /* inertial regime: no viscosity; the low-speed formula where it ends (Re at Re_c = RE_C),
+     * or the high-speed formula where that is smaller (churning.h) */
+    return exp(fmin(t->ln_low0 - 0.6 * ln_Fr - t->ln_low_re_c,
+                    t->ln_high0 - 0.88 * ln_Fr + t->ln_high_b));
 }
 
 double hg_churn_cm(const hg_churn_geom *g, double nu, double omega)
 {
-    double D_p = 2.0 * g->R_p;
-    double h_D = g->h / D_p, V_D3 = g->V_0 / (D_p * D_p * D_p), b_D = g->b / D_p;
-    double Fr = omega * omega * g->R_p / HG_G;
-    double Re = omega * g->R_p * g->b / nu;
-    double Re_c = omega * g->R_p * g->h / nu;
-    if (Re_c <= RE_C) return exp(ln_cm_low(h_D, V_D3, Fr, Re));
-    /* inertial regime: no viscosity; the low-speed formula where it ends (Re at Re_c = RE_C),
-     * or the high-speed formula where that is smaller (churning.h) */
-    return exp(fmin(ln_cm_low(h_D, V_D3, Fr, RE_C * g->b / g->h), ln_cm_high(h_D, V_D3, Fr, b_D)));
+    hg_churn_terms t;
+    hg_churn_terms_of(g, &t);
+    return hg_churn_cm_at(g, &t, nu, omega);
+}
+
+double hg_churn_torque_at(const hg_churn_geom *g, const hg_churn_terms *t, double rho, double nu,
+                          double omega)
+{
+    double w = fabs(omega);
+    if (w <= 0.0) return 0.0;
+    return 0.5 * rho * w * w * t->S_m * t->R3 * hg_churn_cm_at(g, t, nu, w);
 }
 
 double hg_churn_torque(const hg_churn_geom *g, double rho, double nu, double omega)
 {
-    double w = fabs(omega);
-    double R3 = g->R_p * g->R_p * g->R_p;
-    if (w <= 0.0) return 0.0;
-    return 0.5 * rho * w * w * hg_churn_submerged_area(g->R_p, g->b, g->h) * R3 *
-           hg_churn_cm(g, nu, w);
+    hg_churn_terms t;
+    hg_churn_terms_of(g, &t);
+    return hg_churn_torque_at(g, &t, rho, nu, omega);
 }

@@ -42,4 +42,17 @@ double hg_churn_cm(const hg_churn_geom *g, double nu, double omega);
  * rho [kg/m^3], nu [m^2/s], omega [rad/s] of either sign (0 gives 0). The loss is C_ch |omega|. */
 double hg_churn_torque(const hg_churn_geom *g, double rho, double nu, double omega);
 
+/* The parts of C_m and C_ch that depend on the geometry alone (the wetted area S_m, R_p^3 and
+ * the constant sums of logarithms), computed once; the *_at forms take them and give results
+ * identical to hg_churn_cm and hg_churn_torque bit for bit. */
+typedef struct {
+    double S_m, R3;                 /* [m^2], [m^3] */
+    double ln_low0, ln_low_re_c;    /* ln(1.366 (h/D_p)^0.45 (V_0/D_p^3)^0.1), 0.21 ln(6000 b/h) */
+    double ln_high0, ln_high_b;     /* ln(3.644 (h/D_p)^0.1 (V_0/D_p^3)^-0.35), 0.85 ln(b/D_p) */
+} hg_churn_terms;
+void hg_churn_terms_of(const hg_churn_geom *g, hg_churn_terms *t);
+double hg_churn_cm_at(const hg_churn_geom *g, const hg_churn_terms *t, double nu, double omega);
+double hg_churn_torque_at(const hg_churn_geom *g, const hg_churn_terms *t, double rho, double nu,
+                          double omega);
+
 #endif

@@ -169,6 +169,7 @@ int hg_ledger_setup(hg_ledger *a, const hg_vars *v, int gear_set_builtin,
         return -1;
     if (pair_geometry("pinion", "brg_ph_x", v->brg_ph_x, "brg_pt_x", v->brg_pt_x, err, errlen))
         return -1;
+    hg_churn_terms_of(&a->churn, &a->churn_terms);
     for (k = 0; k < HG_N_BRG; k++) hg_trb_geometry_of(&a->brg[k], &a->brg_geom[k]);
     for (k = 0; k < 2; k++) { /* the components are linear in F_t: per newton, once */
         a->unit_p[k] = hg_mesh_force_components(&a->pinion, 1.0, k ? 1.0 : -1.0, 1);
@@ -266,7 +267,8 @@ void hg_ledger_losses(const hg_ledger *a, double w_p, double w_g, double W_t, do
         ev->T_seal_w = 2.0 * hg_seal_torque_linke(a->d_seal_w, f);
     }
     ev->P_seals = opposing(ev->T_seal_p, w_p, &ev->T_p) + opposing(ev->T_seal_w, w_g, &ev->T_g);
-    ev->P_churn = opposing(hg_churn_torque(&a->churn, rho, ev->nu, w_g), w_g, &ev->T_g);
+    ev->P_churn = opposing(hg_churn_torque_at(&a->churn, &a->churn_terms, rho, ev->nu, w_g), w_g,
+                           &ev->T_g);
 }
 
 double hg_ledger_heat_out(const hg_ledger *a, double T_oil, double T_amb, double v_air)

@@ -18,6 +18,7 @@ typedef struct {
     int full;                 /* axle_losses = full: churning, bearings and seals */
     int sump;                 /* thermal_model = sump: T_oil is a state */
     hg_churn_geom churn;      /* the ring gear in the sump */
+    hg_churn_terms churn_terms; /* its geometry's part of the churning torque, once */
     hg_member_geom pinion, gear;
     hg_trb brg[HG_N_BRG];     /* pinion head and tail, carrier ring side and far side */
     hg_trb_geometry brg_geom[HG_N_BRG]; /* their geometry terms (hg_trb_geometry_of) */
