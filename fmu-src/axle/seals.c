@@ -17,7 +17,17 @@ double hg_seal_torque(double d_sh)
 double hg_seal_linke_factor(double T, double nu_40)
 {
     /* Linke: 145 - 1.6 theta_oil [degC] + 350 lg lg(nu_40 [mm^2/s] + 0.8) */
-    double f = 145.0 - 1.6 * (T - T_0C) + 350.0 * log10(log10(nu_40 * 1e6 + 0.8));
+    return hg_seal_linke_factor_at(T, hg_seal_linke_oil_term(nu_40));
+}
+
+double hg_seal_linke_oil_term(double nu_40)
+{
+    return 350.0 * log10(log10(nu_40 * 1e6 + 0.8));
+}
+
+double hg_seal_linke_factor_at(double T, double oil_term)
+{
+    double f = 145.0 - 1.6 * (T - T_0C) + oil_term;
     return f > 0.0 ? f : 0.0;
 }
 

@@ -24,6 +24,9 @@ double hg_seal_torque(double d_sh);
 /* Linke's bracket 145 - 1.6 theta + 350 lg lg(nu_40 + 0.8) [-] at the oil temperature T [K] for
  * an oil of nu_40 [m^2/s]; not below 0. */
 double hg_seal_linke_factor(double T, double nu_40);
+/* its oil's term 350 lg lg(nu_40 + 0.8), once per oil, and the factor from it (the same bits) */
+double hg_seal_linke_oil_term(double nu_40);
+double hg_seal_linke_factor_at(double T, double oil_term);
 
 /* Friction torque magnitude [N m] of one lip seal on a shaft of diameter d_sh [m] by Linke,
  * given his bracket (hg_seal_linke_factor). */

@@ -187,6 +187,7 @@ int hg_ledger_setup(hg_ledger *a, const hg_vars *v, int gear_set_builtin,
                   "0.2 mm^2/s); set seal_model = iso14179", a->nu_40 * 1e6);
         return -1;
     }
+    if (a->seal_linke) a->linke_oil = hg_seal_linke_oil_term(a->nu_40);
     return 0;
 }
 
@@ -262,7 +263,7 @@ void hg_ledger_losses(const hg_ledger *a, double w_p, double w_g, double W_t, do
     ev->T_seal_p = a->T_seal_p;
     ev->T_seal_w = a->T_seal_w;
     if (a->seal_linke) {
-        double f = hg_seal_linke_factor(T_oil, a->nu_40);
+        double f = hg_seal_linke_factor_at(T_oil, a->linke_oil);
         ev->T_seal_p = hg_seal_torque_linke(a->d_seal_p, f);
         ev->T_seal_w = 2.0 * hg_seal_torque_linke(a->d_seal_w, f);
     }

@@ -32,6 +32,7 @@ typedef struct {
     int seal_linke;           /* seal_model = linke: the seal torques follow the oil temperature */
     double d_seal_p, d_seal_w; /* seal shaft diameters [m] */
     double nu_40;             /* the oil's kinematic viscosity at 40 degC [m^2/s] (Linke) */
+    double linke_oil;         /* hg_seal_linke_oil_term(nu_40), once */
     hg_housing housing;
     double h_housing;         /* > 0: fixed convective coefficient [W/(m^2 K)]; 0: correlations */
     double C_sump;            /* heat capacity of oil, gears and housing [J/K] */
