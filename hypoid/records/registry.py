@@ -59,6 +59,11 @@ RECORDS = {r.name: r for r in [
            "the full level's first instance of a process and further instances: CPU from "
            "instantiation to 10 ms, memory each, with and without the shipped tables; the "
            "FMU's size", ("startup.json",), "python bench/startup.py", R + "pages:tables_page"),
+    Record("fmpy-outputs", "A scene from t = 0 through fmpy, every output read",
+           "the full level's 1 s scene from t = 0 at 1 ms steps through fmpy, every output or "
+           "w_p only read after each step: real-time factor, CPU of the start, the steps and "
+           "the reads", ("fmpy-outputs.json",), "python bench/fmpy_outputs.py",
+           R + "pages:tables_page"),
     Record("paper-findings", "The paper's findings in this FMU",
            "the default and full studies' verdicts on the paper's findings, the resonances, the "
            "modal analysis, the what-if inertia, the loaded tooth data's sweep",
