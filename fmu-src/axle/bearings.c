@@ -71,15 +71,27 @@ void hg_trb_geometry_of(const hg_trb *b, hg_trb_geometry *g)
     g->rs = (d + D) * sqrt(SKF_K_Z / (2.0 * (D - d)));
 }
 
-void hg_trb_speed_of(double nu, double omega, hg_trb_speed *s)
+void hg_trb_oil_of(double nu, hg_trb_oil *o)
+{
+    o->v = nu * 1e6; /* mm^2/s */
+    o->ln_v = log(o->v);
+}
+
+void hg_trb_speed_at(const hg_trb_oil *o, double omega, hg_trb_speed *s)
 {
     double n = fabs(omega) * 30.0 / HG_PI; /* r/min */
-    double v = nu * 1e6;                   /* mm^2/s */
-    double ln_n = log(n), ln_v = log(v);   /* n = 0: -inf, and every power of n below 0 */
-    s->vn = v * n;
+    double ln_n = log(n), ln_v = o->ln_v;  /* n = 0: -inf, and every power of n below 0 */
+    s->vn = o->v * n;
     s->n128v064 = exp(1.28 * ln_n + 0.64 * ln_v);
     s->vn14 = exp(1.4 * (ln_n + ln_v));
     s->vn06 = exp(0.6 * (ln_n + ln_v));
+}
+
+void hg_trb_speed_of(double nu, double omega, hg_trb_speed *s)
+{
+    hg_trb_oil o;
+    hg_trb_oil_of(nu, &o);
+    hg_trb_speed_at(&o, omega, s);
 }
 
 hg_trb_moment hg_trb_friction_at(const hg_trb *b, const hg_trb_geometry *g,

@@ -97,10 +97,11 @@ typedef struct {
 hg_trb_moment hg_trb_friction(const hg_trb *b, double F_r, double F_a, double nu, double omega);
 
 /* The same in parts, for a right-hand side that evaluates it often: the bearing's geometry terms
- * (once per bearing), the speed and viscosity terms (once per shaft and evaluation: the bearings
- * of a shaft share them), then the moment at the loads. Powers as exponentials of logarithms,
- * so an evaluation of a shaft's two bearings takes two logarithms, five exponentials and one
- * power per bearing. */
+ * (once per bearing), the oil's viscosity terms (once per evaluation: every shaft shares them),
+ * the speed terms (once per shaft and evaluation: the bearings of a shaft share them), then the
+ * moment at the loads. Powers as exponentials of logarithms, so an evaluation of a shaft's two
+ * bearings takes one logarithm (and the oil's one), five exponentials and one power per
+ * bearing. */
 typedef struct {
     double dm;     /* mean diameter [mm] */
     double G_rr0;  /* R_1 d_m^2.38 */
@@ -110,13 +111,20 @@ typedef struct {
 } hg_trb_geometry;
 
 typedef struct {
+    double v;       /* nu [mm^2/s] */
+    double ln_v;    /* ln(nu [mm^2/s]) */
+} hg_trb_oil;
+
+typedef struct {
     double vn;      /* nu n [mm^2/s r/min] */
     double n128v064; /* n^1.28 nu^0.64 */
     double vn14, vn06; /* (nu n)^1.4, (nu n)^0.6 */
 } hg_trb_speed;
 
 void hg_trb_geometry_of(const hg_trb *b, hg_trb_geometry *g);
-void hg_trb_speed_of(double nu, double omega, hg_trb_speed *s);
+void hg_trb_oil_of(double nu, hg_trb_oil *o);
+void hg_trb_speed_at(const hg_trb_oil *o, double omega, hg_trb_speed *s);
+void hg_trb_speed_of(double nu, double omega, hg_trb_speed *s); /* the two above */
 hg_trb_moment hg_trb_friction_at(const hg_trb *b, const hg_trb_geometry *g,
                                  const hg_trb_speed *s, double F_r, double F_a);
 

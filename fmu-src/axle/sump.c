@@ -13,12 +13,17 @@ double hg_h_natural(double dT, double L)
     return 1.42 * pow(fabs(dT) / L, 0.25);
 }
 
+/* Below it the mixed correlation lies under the laminar one (they cross at 5.0e5; at 4e5 the
+ * mixed Nu is 0.6 of the laminar, and their difference has one minimum, at Re ~ 3e3), so that
+ * the larger of the two is the laminar one without the mixed one's power. */
+#define RE_LAMINAR_WINS 4e5
+
 double hg_h_forced(double v_air, double L)
 {
     double Re = fabs(v_air) * L / NU_AIR, pr3 = cbrt(PR_AIR);
     double Nu_lam = 0.664 * sqrt(Re) * pr3;
-    double Nu_mix = (0.037 * pow(Re, 0.8) - 871.0) * pr3;
-    return fmax(Nu_lam, Nu_mix) * K_AIR / L;
+    if (!(Re > RE_LAMINAR_WINS)) return Nu_lam * K_AIR / L;
+    return fmax(Nu_lam, (0.037 * pow(Re, 0.8) - 871.0) * pr3) * K_AIR / L;
 }
 
 double hg_housing_h_conv(const hg_housing *h, double dT, double v_air)

@@ -165,6 +165,7 @@ int hg_ledger_setup(hg_ledger *a, const hg_vars *v, int gear_set_builtin,
     a->h_housing = v->h_housing;
     a->C_sump = v->C_sump;
     if (!a->full) return 0;
+    a->ln_vogel_a = log(lub->vogel_a);
     if (blank(a, v, gear_set_builtin, file_blank, err, errlen) || bearings(a, v, err, errlen))
         return -1;
     if (pair_geometry("pinion", "brg_ph_x", v->brg_ph_x, "brg_pt_x", v->brg_pt_x, err, errlen))
@@ -196,10 +197,15 @@ double hg_ledger_rho(const hg_lubricant *lub, double T)
     return lub->rho_15 * (1.0 - RHO_EXPANSION * (T - T_15C));
 }
 
+/* nu at T from ln(vogel_a) and the density rho at T */
+static double nu_of(const hg_lubricant *lub, double ln_vogel_a, double T, double rho)
+{
+    return exp(hg_vogel_ln_eta0(ln_vogel_a, lub->vogel_b, lub->vogel_c, T)) / rho;
+}
+
 double hg_ledger_nu(const hg_lubricant *lub, double T)
 {
-    return exp(hg_vogel_ln_eta0(log(lub->vogel_a), lub->vogel_b, lub->vogel_c, T)) /
-           hg_ledger_rho(lub, T);
+    return nu_of(lub, log(lub->vogel_a), T, hg_ledger_rho(lub, T));
 }
 
 /* bearing loads of one shaft from the mesh force on its member (F_t times its components per
@@ -218,12 +224,13 @@ static void shaft_bearings(const hg_ledger *a, const hg_member_geom *m, const hg
 }
 
 /* frictional moment of the pair k1, k1 + 1 [N m] */
-static double pair_moment(const hg_ledger *a, int k1, double nu, double w, const hg_ledger_eval *ev)
+static double pair_moment(const hg_ledger *a, int k1, const hg_trb_oil *oil, double w,
+                          const hg_ledger_eval *ev)
 {
     double M = 0.0;
     hg_trb_speed sp;
     int k;
-    hg_trb_speed_of(nu, w, &sp); /* the shaft's: both bearings turn at w */
+    hg_trb_speed_at(oil, w, &sp); /* the shaft's: both bearings turn at w */
     for (k = k1; k <= k1 + 1; k++) {
         hg_trb_moment m = hg_trb_friction_at(&a->brg[k], &a->brg_geom[k], &sp, ev->Fr[k],
                                              ev->Fa[k]);
@@ -244,10 +251,12 @@ void hg_ledger_losses(const hg_ledger *a, double w_p, double w_g, double W_t, do
                       double R_g, double T_oil, hg_ledger_eval *ev)
 {
     double s = W_t >= 0.0 ? 1.0 : -1.0, rho, dT = T_oil - T_PRELOAD;
+    hg_trb_oil oil;
     *ev = (hg_ledger_eval){0};
     if (!a->full) return;
-    ev->nu = hg_ledger_nu(a->lub, T_oil);
     rho = hg_ledger_rho(a->lub, T_oil);
+    ev->nu = nu_of(a->lub, a->ln_vogel_a, T_oil, rho);
+    hg_trb_oil_of(ev->nu, &oil); /* both shafts' bearings */
     ev->F_pre_p = hg_trb_preload(a->F_pre_p, a->k_ax_p, a->d_alpha,
                                  a->x_brg[HG_BRG_P_TAIL] - a->x_brg[HG_BRG_P_HEAD], dT);
     ev->F_pre_g = hg_trb_preload(a->F_pre_g, a->k_ax_g, a->d_alpha,
@@ -257,8 +266,8 @@ void hg_ledger_losses(const hg_ledger *a, double w_p, double w_g, double W_t, do
     /* the carrier: the ring-side bearing takes a thrust away from the ring's apex */
     shaft_bearings(a, &a->gear, &a->unit_g[s > 0.0], fabs(W_t) * R_g / a->gear.r_m,
                    HG_BRG_G_NEAR, ev->F_pre_g, ev);
-    ev->P_bearings_p = opposing(pair_moment(a, HG_BRG_P_HEAD, ev->nu, w_p, ev), w_p, &ev->T_p);
-    ev->P_bearings_g = opposing(pair_moment(a, HG_BRG_G_NEAR, ev->nu, w_g, ev), w_g, &ev->T_g);
+    ev->P_bearings_p = opposing(pair_moment(a, HG_BRG_P_HEAD, &oil, w_p, ev), w_p, &ev->T_p);
+    ev->P_bearings_g = opposing(pair_moment(a, HG_BRG_G_NEAR, &oil, w_g, ev), w_g, &ev->T_g);
     ev->P_bearings = ev->P_bearings_p + ev->P_bearings_g;
     ev->T_seal_p = a->T_seal_p;
     ev->T_seal_w = a->T_seal_w;

@@ -37,6 +37,7 @@ typedef struct {
     double h_housing;         /* > 0: fixed convective coefficient [W/(m^2 K)]; 0: correlations */
     double C_sump;            /* heat capacity of oil, gears and housing [J/K] */
     const hg_lubricant *lub;
+    double ln_vogel_a;        /* ln of the lubricant's Vogel a, once */
 } hg_ledger;
 
 typedef struct {
