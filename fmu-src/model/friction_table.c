@@ -12,7 +12,8 @@
 #define LOAD_LOW 0.0625  /* rebuild when W_t falls below this fraction of W_max */
 #define FD_SPEED 5e-4    /* relative step of the speed derivatives (forward) */
 #define FD_T 0.025       /* step of the temperature derivative (forward) [K] */
-#define LN_W_SPAN -6.907755278982137 /* ln(1e-3): the load range is [W_max / 1000, W_max] */
+#define LN_W_SPAN -6.931471805599453 /* ln(2^-10): the load range is [W_max / 1024, W_max] */
+#define SQRT_HALF 0.70710678118654752440
 #define MU_FLOOR 1e-12   /* mu of pairs the friction model leaves without friction */
 #define DRIFT_HOLD 2.0   /* the drift terms are held beyond this many windows of the key */
 
@@ -198,32 +199,76 @@ static void drift_slopes(double *e, const hg_ft_key *k, const hg_friction_config
     e[HG_FT_CH_T] = (ln_mu_drift(cfg, q, k->w_p, k->w_g, T + FD_T, T_c, &shift[2]) - L0) / FD_T;
 }
 
+double hg_ft_column_load(double W_max, int j)
+{
+    int down = HG_FT_N_L - 1 - j; /* half powers of 2 below W_max */
+    double W = ldexp(W_max, -(down / 2));
+    return down % 2 ? W * SQRT_HALF : W;
+}
+
+void hg_ft_column_build(hg_ft_column *col, const hg_friction_config *cfg, const hg_gearset *g,
+                        int flank, int level, const hg_ft_key *key, int gear_follows)
+{
+    double warm = NAN, shift[3] = {0.0, 0.0, 0.0}, step = 0.0;
+    int i;
+    col->key = *key;
+    col->usable = 1;
+    for (i = 0; i < HG_FT_N_PSI; i++) { /* along the path: each solve warm-starts the next */
+        hg_pair_point pt;
+        table_point q;
+        double *e = col->c[i], before = warm;
+        hg_gearset_pair_point(g, flank, level, HG_TWO_PI * i / HG_FT_N_PSI, &pt);
+        point_at(cfg, &pt, key->W_max, key, &q);
+        warm += step; /* the last step along the path continued */
+        e[HG_FT_CH_L] = ln_mu(cfg, &q, key->w_p, key->w_g, key->T_bath, &warm);
+        step = i > 0 ? warm - before : 0.0;
+        drift_slopes(e, key, cfg, &q, gear_follows, warm, shift);
+        if (!(e[HG_FT_CH_L] <= log(HG_FT_MU_MAX))) col->usable = 0;
+    }
+}
+
+/* The key of column j of a table keyed k: k's with the column's load in place of W_max. */
+static void column_key(const hg_ft_key *k, int j, hg_ft_key *ck)
+{
+    *ck = *k;
+    ck->W_max = hg_ft_column_load(k->W_max, j);
+}
+
+/* Column j of t from col (its phases; the ghosts are filled when every column is in). */
+static void column_into(hg_friction_table *t, int j, const hg_ft_column *col)
+{
+    int i;
+    for (i = 0; i < HG_FT_N_PSI; i++) memcpy(t->c[i + 1][j + 1], col->c[i], sizeof col->c[i]);
+    if (!col->usable) t->usable = 0;
+}
+
+static void table_start(hg_friction_table *t, const hg_ft_key *key)
+{
+    t->key = *key;
+    t->per_W_max = 1.0 / key->W_max;
+    t->usable = 1;
+}
+
+static void table_finish(hg_friction_table *t)
+{
+    fill_ghosts(t);
+    t->built = 1;
+}
+
 void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg,
                              const hg_gearset *g, int flank, int level, const hg_ft_key *key,
                              int gear_follows)
 {
-    int i, j;
-    t->key = *key;
-    t->per_W_max = 1.0 / key->W_max;
-    t->usable = 1;
+    hg_ft_column col;
+    int j;
+    table_start(t, key);
     for (j = 0; j < HG_FT_N_L; j++) {
-        double W = key->W_max * exp(LN_W_SPAN * (1.0 - (double)j / (HG_FT_N_L - 1))), warm = NAN;
-        double shift[3] = {0.0, 0.0, 0.0}, step = 0.0;
-        for (i = 0; i < HG_FT_N_PSI; i++) { /* along the path: each solve warm-starts the next */
-            hg_pair_point pt;
-            table_point q;
-            double *e = t->c[i + 1][j + 1], before = warm;
-            hg_gearset_pair_point(g, flank, level, HG_TWO_PI * i / HG_FT_N_PSI, &pt);
-            point_at(cfg, &pt, W, key, &q);
-            warm += step; /* the last step along the path continued */
-            e[HG_FT_CH_L] = ln_mu(cfg, &q, key->w_p, key->w_g, key->T_bath, &warm);
-            step = i > 0 ? warm - before : 0.0;
-            drift_slopes(e, key, cfg, &q, gear_follows, warm, shift);
-            if (!(e[HG_FT_CH_L] <= log(HG_FT_MU_MAX))) t->usable = 0;
-        }
+        hg_ft_key ck;
+        column_key(key, j, &ck);
+        hg_ft_column_build(&col, cfg, g, flank, level, &ck, gear_follows);
+        column_into(t, j, &col);
     }
-    fill_ghosts(t);
-    t->built = 1;
+    table_finish(t);
 }
 
 /* Entry by entry (ghosts included: they are linear in the nodes, and so is the interpolant). */
@@ -454,40 +499,52 @@ void hg_ft_set_alloc(hg_ft_set *s, const hg_friction_config *cfg, const hg_gears
     }
 }
 
-/* What a node table is built from. */
+/* What a node table's column is built from. */
 typedef struct {
     const hg_friction_config *cfg;
     const hg_gearset *g;
     int flank, level, gear_follows;
-    const hg_ft_key *key;
-} node_job;
+    const hg_ft_key *key; /* the column's (column_key) */
+} column_job;
 
-static int build_node(void *table, void *ctx)
+static int build_column(void *column, void *ctx)
 {
-    const node_job *j = ctx;
-    hg_friction_table_build(table, j->cfg, j->g, j->flank, j->level, j->key, j->gear_follows);
+    const column_job *j = ctx;
+    hg_ft_column_build(column, j->cfg, j->g, j->flank, j->level, j->key, j->gear_follows);
     return 0;
 }
 
-/* The node table of table index i for key k, from the store (read from the FMU's resources or
- * solved now if no instance of the process has it), held until hg_store_put; NULL when out of memory. */
-static const hg_friction_table *node(hg_ft_set *s, const hg_friction_config *cfg,
-                                     const hg_gearset *g, int i, const hg_ft_key *k)
+/* The node table of table index i for key k into t, column by column from the store (read from
+ * the FMU's resources or solved now if no instance of the process has it): a column is named by
+ * its own load, so the node tables of the load ranges on the lattice share the columns their
+ * ranges share. 0, or -1 when out of memory or a hash collision (never seen): the direct
+ * solve. */
+static int node(hg_ft_set *s, const hg_friction_config *cfg, const hg_gearset *g, int i,
+                const hg_ft_key *k, hg_friction_table *t)
 {
-    hg_store_id id;
-    node_job job;
-    const hg_friction_table *t;
-    int built;
-    id.a = s->content[0], id.b = s->content[1];
-    id = hg_store_hash(id, &i, sizeof i);
-    id = hg_store_hash(id, k, sizeof *k);
-    job.cfg = cfg, job.g = g, job.flank = i / s->n_levels, job.level = i % s->n_levels;
-    job.gear_follows = s->gear_follows, job.key = k;
-    t = hg_store_get_shipped(s->resource_dir, id, sizeof *t, build_node, &job, &built);
-    s->solved += (unsigned long)built;
-    if (t && !memcmp(&t->key, k, sizeof *k)) return t;
-    hg_store_put(t); /* a hash collision (never seen) or out of memory: the direct solve */
-    return NULL;
+    int j;
+    table_start(t, k);
+    for (j = 0; j < HG_FT_N_L; j++) {
+        hg_store_id id;
+        column_job job;
+        hg_ft_key ck;
+        const hg_ft_column *col;
+        int built, ok;
+        column_key(k, j, &ck);
+        id.a = s->content[0], id.b = s->content[1];
+        id = hg_store_hash(id, &i, sizeof i);
+        id = hg_store_hash(id, &ck, sizeof ck);
+        job.cfg = cfg, job.g = g, job.flank = i / s->n_levels, job.level = i % s->n_levels;
+        job.gear_follows = s->gear_follows, job.key = &ck;
+        col = hg_store_get_shipped(s->resource_dir, id, sizeof *col, build_column, &job, &built);
+        s->solved += (unsigned long)built;
+        ok = col && !memcmp(&col->key, &ck, sizeof ck);
+        if (ok) column_into(t, j, col);
+        hg_store_put(col);
+        if (!ok) return -1;
+    }
+    table_finish(t);
+    return 0;
 }
 
 const hg_friction_table *hg_ft_set_table(hg_ft_set *s, const hg_friction_config *cfg,
@@ -498,14 +555,13 @@ const hg_friction_table *hg_ft_set_table(hg_ft_set *s, const hg_friction_config 
     if (!t && !(t = s->t[i] = calloc(1, sizeof *t))) return NULL;
     if (!t->built || memcmp(&t->key, &s->key, sizeof s->key)) {
         hg_ft_key k_lo, k_hi;
-        const hg_friction_table *lo, *hi;
+        hg_friction_table *nodes = malloc(2 * sizeof *nodes); /* the two around the key */
+        int ok;
         hg_ft_node_keys(&s->key, s->ratio, &k_lo, &k_hi);
-        lo = node(s, cfg, g, i, &k_lo);
-        hi = lo ? node(s, cfg, g, i, &k_hi) : NULL;
-        if (hi) hg_friction_table_between(t, lo, hi, &s->key, s->gear_follows);
-        hg_store_put(lo);
-        hg_store_put(hi);
-        if (!hi) return NULL; /* out of memory: the direct solve */
+        ok = nodes && !node(s, cfg, g, i, &k_lo, &nodes[0]) && !node(s, cfg, g, i, &k_hi, &nodes[1]);
+        if (ok) hg_friction_table_between(t, &nodes[0], &nodes[1], &s->key, s->gear_follows);
+        free(nodes);
+        if (!ok) return NULL; /* out of memory: the direct solve */
     }
     return t->usable ? t : NULL;
 }

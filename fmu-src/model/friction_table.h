@@ -10,7 +10,7 @@
  * What is tabulated is ln(mu) = ln(F_f / W), smooth along the path and in ln W (mu varies as a
  * small power of the load, or exponentially with the pressure for the isothermal shear), and its
  * derivatives; interpolation is Catmull-Rom cubic in psi (periodic) and in ln W over
- * [W_max / 1000, W_max], mu held beyond. Its error against the direct solve is tested in
+ * [W_max / 1024, W_max], mu held beyond. Its error against the direct solve is tested in
  * tests/c/test_friction_table.c. */
 #ifndef HG_FRICTION_TABLE_H
 #define HG_FRICTION_TABLE_H
@@ -21,7 +21,8 @@
 /* phases over the load-share period: a multiple of 3, so that the three pairs, a third of the
  * period apart, fall on the same fraction of their cells (hg_friction_table_pairs) */
 #define HG_FT_N_PSI 129
-#define HG_FT_N_L 20    /* loads: W_max 10^(-3 (1 - j / 19)), j = 0 ... 19 (16 left 1.7e-3 of mu
+#define HG_FT_N_L 21    /* loads: W_max 2^(-(20 - j) / 2), j = 0 ... 20, half powers of 2 over
+                           [W_max / 1024, W_max] (16 loads over three decades left 1.7e-3 of mu
                            at the design point with the moving contact of docs/physics.md §10.4) */
 
 enum { HG_FT_CH_L, HG_FT_CH_WP, HG_FT_CH_WG, HG_FT_CH_T, HG_FT_N_CH };
@@ -119,6 +120,26 @@ void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg
                              const hg_gearset *g, int flank, int level, const hg_ft_key *key,
                              int gear_follows);
 
+/* One load of a table along the path: ln mu and its derivatives at the phase nodes at load
+ * key.W_max. A table is its columns side by side (hg_friction_table_build), and the columns of the
+ * node tables live in the store one by one, named by their own load: column j of a table keyed
+ * W_max has the load hg_ft_column_load(W_max, j), with the same bits as column j + 4 of a table
+ * keyed 4 W_max, so node tables on the load lattice (hg_ft_load_range_on_lattice) share all but
+ * four of their columns with the range above and below. */
+typedef struct {
+    hg_ft_key key; /* W_max: the column's load [N] */
+    int usable;    /* every mu of the column <= HG_FT_MU_MAX */
+    double c[HG_FT_N_PSI][HG_FT_N_CH];
+} hg_ft_column;
+
+/* The load of column j of a table whose load range ends at W_max [N]: W_max 2^-k (exact) for
+ * even N_L - 1 - j = 2 k, times sqrt(1/2) for odd ones. */
+double hg_ft_column_load(double W_max, int j);
+
+/* The column of hg_friction_table_build at load key->W_max. */
+void hg_ft_column_build(hg_ft_column *col, const hg_friction_config *cfg, const hg_gearset *g,
+                        int flank, int level, const hg_ft_key *key, int gear_follows);
+
 /* The table for key between the node tables lo and hi (hg_ft_node_keys of key; the same flank,
  * level and gear_follows): cubic Hermite in ln|w_p| of ln mu along the line w_g / w_p of the
  * keys from the nodes' values and speed derivatives, its derivative there the table's speed
@@ -169,7 +190,7 @@ typedef struct {
     hg_friction_table *t[HG_N_FLANKS * HG_MAX_LEVELS]; /* allocated when first used */
     unsigned long long content[2]; /* the store's hash of the friction model, gear set and
                                       gear_follows (hg_ft_set_alloc) */
-    unsigned long solved;          /* node tables this set solved (diagnostics) */
+    unsigned long solved;          /* node table columns this set solved (diagnostics) */
     const char *resource_dir;      /* where shipped node tables lie (resources/tables/), or
                                       NULL (hg_store_get_shipped) */
 } hg_ft_set;

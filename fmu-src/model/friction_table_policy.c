@@ -82,7 +82,7 @@ static void build(hg_ft_set *tables, const hg_runtime *rt, const hg_setup *s,
     hg_ft_set_table(tables, &s->p.friction, &s->gear, b.flank, b.lo);
     if (b.hi != b.lo) hg_ft_set_table(tables, &s->p.friction, &s->gear, b.flank, b.hi);
     hg_logf(log, "logEvents", "t = %.6f s: friction table built for %.1f rpm, T_oil = "
-            "%.2f degC, pair loads up to %.0f N (%lu node tables solved so far)", rt->t,
+            "%.2f degC, pair loads up to %.0f N (%lu node table columns solved so far)", rt->t,
             rt->ft_key.w_p * HG_RPM_PER_RAD_S, rt->ft_key.T_bath - 273.15, rt->ft_key.W_max,
             tables->solved);
 }

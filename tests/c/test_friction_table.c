@@ -7,6 +7,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "check.h"
 #include "io/constants.h"
@@ -219,6 +220,46 @@ static void test_load_lattice(void)
     CHECK(n == 10 && n_lat == 3);
 }
 
+/* The node tables of neighbouring load ranges on the lattice share their columns: column j of a
+ * table keyed 4 W_max is column j + 4 of the one keyed W_max, bit for bit (their loads are the
+ * same half powers of 2, hg_ft_column_load), so the store solves only the four loads a new range
+ * adds; a set's table between the node tables assembled column by column from the store is the
+ * one interpolated between node tables built whole. */
+static void test_columns_shared(const hg_friction_config *cfg, const hg_gearset *g)
+{
+    static hg_friction_table low, high, lo, hi, between;
+    static hg_ft_set set;
+    hg_ft_key key, k_lo, k_hi;
+    const hg_friction_table *t;
+    double ratio = (double)g->N_g / g->N_p;
+    int i, j, same = 1;
+    CHECK(hg_ft_column_load(4000.0, HG_FT_N_L - 1) == 4000.0);
+    CHECK(hg_ft_column_load(4000.0, HG_FT_N_L - 3) == 2000.0);
+    CHECK(fabs(hg_ft_column_load(4000.0, 0) / 4000.0 - 1.0 / 1024.0) < 1e-15);
+    for (j = 0; j + 4 < HG_FT_N_L; j++)
+        CHECK(hg_ft_column_load(16000.0, j) == hg_ft_column_load(4000.0, j + 4));
+    hg_ft_key_for(1100.0 * RPM, ratio, 313.15, 2000.0, &key);
+    key.W_max = 4000.0;
+    hg_ft_node_keys(&key, ratio, &k_lo, &k_hi);
+    hg_friction_table_build(&low, cfg, g, HG_FLANK_DRIVE, 0, &k_lo, 0);
+    k_lo.W_max = 16000.0;
+    hg_friction_table_build(&high, cfg, g, HG_FLANK_DRIVE, 0, &k_lo, 0);
+    for (i = 1; i <= HG_FT_N_PSI; i++)
+        for (j = 1; j + 4 <= HG_FT_N_L; j++)
+            same = same && !memcmp(high.c[i][j], low.c[i][j + 4], sizeof high.c[i][j]);
+    CHECK(same);
+    hg_ft_set_alloc(&set, cfg, g, 0);
+    set.key = key;
+    set.keyed = 1;
+    k_lo.W_max = 4000.0;
+    hg_friction_table_build(&lo, cfg, g, HG_FLANK_DRIVE, 0, &k_lo, 0);
+    hg_friction_table_build(&hi, cfg, g, HG_FLANK_DRIVE, 0, &k_hi, 0);
+    hg_friction_table_between(&between, &lo, &hi, &key, 0);
+    t = hg_ft_set_table(&set, cfg, g, HG_FLANK_DRIVE, 0);
+    CHECK(t && !memcmp(t->c, between.c, sizeof between.c) && set.solved == 2 * HG_FT_N_L);
+    hg_ft_set_free(&set);
+}
+
 /* hg_ft_temperature_on_lattice: an even number of kelvin, within HG_FT_T_DRIFT of the
  * temperature, so a key moved onto it as friction_table_policy.c does still covers the
  * temperature that moved it, from -60 to 200 degC; an oil warming from 20 to 60 degC and cooling
@@ -371,6 +412,7 @@ int main(void)
             cfg.lub = &oil[k];
             if (k == 0 && thermal) test_drift_held(&cfg, &g);
             if (k == 0 && thermal) test_pairs_at_once(&cfg, &g);
+            if (k == 0 && thermal) test_columns_shared(&cfg, &g);
             for (rigid = 0; rigid < 4; rigid++) { /* rigid & 1: the gear speed follows; & 2:
                                                       between the node tables, as the model */
                 int gf = rigid & 1, nodes = rigid >> 1;

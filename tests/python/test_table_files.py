@@ -16,8 +16,8 @@ import pytest
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 TABLE_FILES = ROOT / "build" / "table_files"
 HEADER = 64
-NODE_TABLE = 92984  # sizeof(hg_friction_table)
-C_OFFSET = 56  # offsetof(hg_friction_table, c): the key (5 doubles), built, usable, per_W_max
+NODE_TABLE = 4176  # sizeof(hg_ft_column): a node table's load column
+C_OFFSET = 48  # offsetof(hg_ft_column, c): the key (5 doubles), usable
 
 # the full level at its start values for 20 ms at 1 ms steps, every Real output after each step,
 # in a process of its own (the table store is the process's): the outputs' bytes, hashed
