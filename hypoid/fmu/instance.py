@@ -18,6 +18,7 @@ from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import (FMU2Slave, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE,
                        fmi2CallbackFunctions, fmi2CallbackLoggerTYPE)
 
+from hypoid.fmu import sample_loop
 from hypoid.fmu.values import RPM, SPEED_KEY, TABLE, BadValue, Table  # noqa: F401 (re-exported)
 
 ERROR = 3  # fmi2Status of errors (fmi2Error) and worse
@@ -272,9 +273,10 @@ class Instance:
             out[n] = [row[j] for row in ri]
         return out
 
-    def fast_io(self, reals, ints=(), inputs=()):
-        """A FastIo for the hot loops of the studies (fixed names, fewer Python layers)."""
-        return FastIo(self, reals, ints, inputs)
+    def fast_io(self, reals, ints=(), inputs=(), native=True):
+        """A FastIo for the hot loops of the studies (fixed names, fewer Python layers; its
+        run() in C where the build has the loop, unless native=False)."""
+        return FastIo(self, reals, ints, inputs, native)
 
     def pinion_teeth(self):
         """N_p of the gear set in use (after initialisation)."""
@@ -320,13 +322,14 @@ class FastIo:
     cost about as much as the FMU's own step there. Same calls, same values; a failed call
     raises FmuError like Instance's other calls."""
 
-    def __init__(self, inst, reals, ints=(), inputs=()):
+    def __init__(self, inst, reals, ints=(), inputs=(), native=True):
         self.inst = inst
         dll, self.component = inst.slave.dll, inst.slave.component
-        self._do_step = _STEP(ctypes.cast(dll.fmi2DoStep, ctypes.c_void_p).value)
-        self._get_real, self._get_int, self._set_real = (
-            _ARRAY(ctypes.cast(getattr(dll, f), ctypes.c_void_p).value)
-            for f in ("fmi2GetReal", "fmi2GetInteger", "fmi2SetReal"))
+        self._fns = [ctypes.cast(getattr(dll, f), ctypes.c_void_p).value
+                     for f in ("fmi2DoStep", "fmi2GetReal", "fmi2GetInteger", "fmi2SetReal")]
+        self._do_step = _STEP(self._fns[0])
+        self._get_real, self._get_int, self._set_real = (_ARRAY(a) for a in self._fns[1:])
+        self._loop = sample_loop.library() if native else None
         self._set_derivatives = _DERIVATIVES(
             ctypes.cast(dll.fmi2SetRealInputDerivatives, ctypes.c_void_p).value)
         self.n_real, self.n_int = len(reals), len(ints)
@@ -373,6 +376,58 @@ class FastIo:
         self._check(self._get_real(self.component, self._vr_real, self.n_real, self._out),
                     "fmi2GetReal", before)
         return self._out[:self.n_real]
+
+    def run(self, t, h, reals, ints, times, inputs=None):
+        """len(times) steps of size h from t, each followed by a read of the outputs into the
+        next row of `reals` (C-ordered float64, n_real columns) and `ints` (C-ordered int32,
+        n_int columns, unused without integer outputs), its end time into `times` (float64);
+        `inputs[i]` (values of the inputs, in their order) set before step i. The same calls as
+        set_inputs(), step() and read() in a loop, made by the C loop of hypoid.fmu.sample_loop
+        where the checkout's build has it (native=False at construction: never): per sample,
+        the Python and ctypes around the FMU's calls cost about as much as the FMU's step.
+        Returns the end time."""
+        if self._loop is not None:
+            before = self.inst._n_logged
+            status, _, function, t_end = sample_loop.run(self._loop, self._fns, self, t, h,
+                                                         reals, ints, times, inputs)
+            if t_end != t:  # as step(): the end of the last step made
+                self.inst.t = t = t_end
+            self._check(status, function, before)
+            return t
+        return self._run_here(t, h, reals, ints, times, inputs)
+
+    def _run_here(self, t, h, reals, ints, times, inputs):
+        """run()'s loop in Python, with the calls bound once."""
+        inst, comp = self.inst, self.component
+        do_step, get_real, get_int = self._do_step, self._get_real, self._get_int
+        vr_real, n_real, vr_int, n_int = self._vr_real, self.n_real, self._vr_int, self.n_int
+        r_at, r_stride = reals.ctypes.data, reals.strides[0]
+        i_at, i_stride = ints.ctypes.data, ints.strides[0]
+        for i in range(len(times)):
+            if inputs is not None:
+                if i:
+                    inst.t = t  # as step(): the end of the last step made
+                self.set_inputs(inputs[i])
+            before = inst._n_logged
+            s = do_step(comp, t, h, 1)
+            if s > WARNING:
+                if i:
+                    inst.t = t
+                self._check(s, "fmi2DoStep", before)
+            t += h
+            times[i] = t
+            before = inst._n_logged
+            s = get_real(comp, vr_real, n_real, r_at + i * r_stride)
+            if s <= WARNING and n_int:
+                s = get_int(comp, vr_int, n_int, i_at + i * i_stride)
+                function = "fmi2GetInteger"
+            else:
+                function = "fmi2GetReal"
+            if s > WARNING:
+                inst.t = t
+                self._check(s, function, before)
+        inst.t = t
+        return t
 
     def read(self, real_address, int_address):
         """The outputs to memory: n_real float64 at real_address, n_int int32 at int_address

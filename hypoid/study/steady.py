@@ -58,17 +58,9 @@ class Sampler:
         reals = np.empty((n, io.n_real))
         ints = np.empty((n, io.n_int), dtype=np.int32)
         times = np.empty(n)
-        r_at, r_stride = reals.ctypes.data, reals.strides[0]
-        i_at, i_stride = ints.ctypes.data, ints.strides[0]
-        t = self.t
-        for i in range(n):
-            if w_ramp is not None:
-                io.set_inputs([w_ramp[0] + (w_ramp[1] - w_ramp[0]) * (i + 1) / n])
-            io.step(t, h)
-            t += h
-            times[i] = t
-            io.read(r_at + i * r_stride, i_at + i * i_stride)
-        self.t = t
+        inputs = None if w_ramp is None else [
+            [w_ramp[0] + (w_ramp[1] - w_ramp[0]) * (i + 1) / n] for i in range(n)]
+        self.t = io.run(self.t, h, reals, ints, times, inputs)
         # the mesh angle by the rectangle rule (drift << one mesh cycle), summed in step order
         j_w = names.index("w_p")
         theta = np.add.accumulate(np.concatenate(([self.theta], self.n_p * reals[:, j_w] * h)))

@@ -86,6 +86,34 @@ def test_fast_io_reads_what_fmpy_reads_and_raises_the_fmus_errors(inst):
         io.set_inputs([1e6])
 
 
+def test_fast_io_run_in_c_makes_the_python_loops_calls(inst):
+    """FastIo.run in C (hypoid/fmu/sample_loop.c, built by scripts/setup.sh) and in Python: the
+    same values bit for bit, a ramped input, and the FMU's error with the failed call's name."""
+    from hypoid.fmu import sample_loop
+
+    assert sample_loop.library() is not None, "build/libhg_sample_loop.so: run cmake --build"
+    out = {}
+    for native in (True, False):
+        inst.start({"T_s": 100.0, "speed_rpm": 2000.0})
+        io = inst.fast_io(["w_p", "DTE", "pair[2].mu"], ["contact", "n_impacts"], ["w_set"],
+                          native=native)
+        reals, ints = np.empty((40, 3)), np.empty((40, 2), dtype=np.int32)
+        times = np.empty(40)
+        ramp = [[209.0 + 0.05 * i] for i in range(40)]
+        t = io.run(0.0, 1e-4, reals, ints, times, ramp)
+        assert t == times[-1] == inst.t and inst.get("w_set") == ramp[-1][0]
+        with pytest.raises(FmuError, match="does not continue the FMU time") as e:
+            io.run(0.5, 1e-4, reals[:1], ints[:1], times[:1])
+        assert e.value.function == "fmi2DoStep" and inst.t == t
+        with pytest.raises(FmuError, match=r"w_set = 1000000 rad/s .* outside its range") as e:
+            io.run(t, 1e-4, reals[:1], ints[:1], times[:1], [[1e6]])
+        assert e.value.function == "fmi2SetReal"
+        out[native] = reals, ints, times
+    for a, b in zip(out[True], out[False]):
+        assert np.array_equal(a, b)
+    assert len(set(out[True][0][:, 0])) == 40  # the speed moved at every step
+
+
 def test_window_is_sampled_32_times_per_mesh_cycle(inst):
     row, win = steady.run_point(inst, {"T_s": 100.0, "speed_rpm": 3000.0}, QUICK, trace=True)
     n = QUICK.window_cycles * QUICK.samples_per_cycle
