@@ -64,9 +64,10 @@ def compute_map(fmu, params, speeds_rpm, torques, temperatures_c, workers):
             raise RuntimeError(f"map point {points[i][1:]}: {res.get('message')}")
         etas[i] = res["eta"]
 
+    ref = parallel.FmuRef(fmu)  # before the workers: they are forked with its bytes
     with parallel.executor(workers=workers) as client:
-        parallel.run([(i, efficiency_point, p) for i, p in enumerate(points)],
-                     parallel.FmuRef(fmu), store, client, desc="map points")
+        parallel.run([(i, efficiency_point, p) for i, p in enumerate(points)], ref, store,
+                     client, desc="map points")
     return etas
 
 
