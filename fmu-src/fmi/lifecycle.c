@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "fmi/instance.h"
+#include "model/table_store.h"
 
 static int set_categories(hg_instance *c, const char *fn, int on, size_t n,
                           const char *const cats[])
@@ -44,6 +45,7 @@ void hg_free_instance(hg_instance *c)
 {
     if (!c) return;
     hg_model_free(c->model);
+    hg_store_detach(); /* the instance's own hold (hg_instantiate) */
     hg_vars_free_strings(&c->vars);
     free(c->resource_dir);
     free(c->name);
@@ -120,6 +122,9 @@ hg_instance *hg_instantiate(const char *fn, const char *name, const char *token,
         return NULL;
     }
     strcpy(c->name, name ? name : "");
+    /* the instance holds the process's shared tables for its whole life: its model is freed and
+     * made again at fmi2Reset, and the store would empty if that model were its only holder */
+    hg_store_attach();
     if (check_instantiate_args(c, fn, name, token, tokens) || reset_instance(c)) {
         hg_free_instance(c);
         return NULL;
