@@ -444,12 +444,15 @@ def test_container_of_gear_and_vehicle(run, tmp_path):
     box = cd.make_container(SCENE, h, tmp_path)
     assert validate_fmu(str(box)) == []
     r = cd.run_container(SCENE, h, box)
-    # its parallel scheduling is Jacobi too, but fmpy gives it T_s in other last bits, and BDF's
-    # path (its step sizes and orders) answers to them now and then: the two agree to the
+    # its parallel scheduling is Jacobi too, but fmpy gives it T_s in other last bits (4.5e-13
+    # N m), and BDF's path (its step sizes and orders, and where the friction tables' key moves
+    # through the tip-out's load ranges) answers to them now and then: the two agree to the
     # integrator's tolerance, not to round-off (measured for w_p at cd.TIGHT 6.7e-10 one-series,
-    # 3.8e-9 loaded; 4.3e-7 at rtol 1e-8 with atol 1e-10 m, the comparison's settings before)
+    # 3.8e-9 loaded; 4.3e-7 at rtol 1e-8 with atol 1e-10 m, the comparison's settings before;
+    # the friction tables' loads at half powers of 2 moved w_p 6.1e-9 -> 3.9e-8 and eta 5.6e-9
+    # -> 6.4e-8, the two runs parting at the tip-out, t = 1.2765 s, and the tip-in, 1.8335 s)
     for name, d in cd.difference(r, run("fmpy", h)).items():
-        assert d["rel"] < 5e-8, name
+        assert d["rel"] < 1e-7, name
     e = cd.energy_balance(r)
     assert abs(e["residual"]) < 1e-3 * e["W_Ts"]
 
