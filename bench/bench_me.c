@@ -242,6 +242,7 @@ static int run(const fmu_lib *f_g, const fmu_info *m_g, const fmu_lib *f_v, cons
     int rc = -1;
     const char *names[3] = {"w_p", "E_in", "E_out"};
     memset(&s, 0, sizeof s);
+    memset(&opt, 0, sizeof opt); /* max_order, jac_every: the integrator's own */
     s.nx_g = m_g->nx, s.nx_v = m_v->nx, s.nz = m_g->nz;
     s.g_ts_tw[0] = (fmi2ValueReference)host_value_reference(m_g, "T_s");
     s.g_ts_tw[1] = (fmi2ValueReference)host_value_reference(m_g, "T_w");
