@@ -38,6 +38,11 @@ int hg_dyn_quasi_static_input(const hg_dyn_params *p)
     return p->mesh == HG_MESH_MODEL_RIGID && p->quasi_static_input;
 }
 
+int hg_dyn_quasi_static_output(const hg_dyn_params *p)
+{
+    return p->mesh == HG_MESH_MODEL_RIGID && p->quasi_static_output;
+}
+
 double hg_dyn_input_speed(const hg_dyn_params *p, const double *y)
 {
     return hg_dyn_quasi_static_input(p) ? y[HG_Y_W_P] : y[HG_Y_W_S];
@@ -226,7 +231,7 @@ static double at_least_zero(double x) { return x > 0.0 ? x : 0.0; }
 static void map_loss(const hg_dyn_params *p, const double *y,
                      hg_dyn_eval *ev)
 {
-    double w_p = y[HG_Y_W_P], T_1 = ev->T_1, T_2p = shaft2_torque(p, y) / p->ratio;
+    double w_p = y[HG_Y_W_P], T_1 = ev->T_1, T_2p = ev->T_2 / p->ratio;
     int coast = -T_2p * w_p > T_1 * w_p; /* power enters from the wheel side */
     double drag = coast ? fabs(ev->axle.T_g) / p->ratio : fabs(ev->axle.T_p);
     double T_in = at_least_zero(fabs(coast ? T_2p : T_1) - drag);
@@ -255,10 +260,19 @@ static void axle_losses(const hg_dyn_params *p, const double *y, hg_dyn_eval *ev
                      ev->T_oil, &ev->axle);
 }
 
+/* The output shaft's torque on the gear at pinion acceleration acc: its spring's (t2), or with
+ * the shaft quasi-static the wheel end's torque T_w plus what accelerates the wheel end. */
+static double output_torque(const hg_dyn_params *p, int qo, double t2, double T_w, double acc)
+{
+    return qo ? T_w + p->I_w * acc / p->ratio : t2;
+}
+
 /* Rigid mesh: the pinion-gear body's acceleration and the mesh load it implies. With the input
  * shaft quasi-static (hg_dyn_quasi_static_input: the map level's, or input_shaft = quasi_static)
  * the body includes the input shaft's end, the shaft a massless spring carrying
- * T_1 = T_s - I_s acc to the pinion.
+ * T_1 = T_s - I_s acc to the pinion; with the output shaft quasi-static
+ * (hg_dyn_quasi_static_output) it includes the wheel end, resisted by T_w, the shaft carrying
+ * T_2 = T_w + I_w acc / i from the gear.
  * Friction needs the load and changes the acceleration: the axle's torques are taken into the
  * load first (from the frictionless load; they depend on it only through the bearing loads),
  * then one pass of the mesh friction from that load suffices (its torques change W_t by a
@@ -266,25 +280,30 @@ static void axle_losses(const hg_dyn_params *p, const double *y, hg_dyn_eval *ev
 static void rigid_mesh(const hg_dyn_params *p, const hg_inputs *u, const double *y,
                        int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
-    int qs = hg_dyn_quasi_static_input(p);
-    double i = p->ratio, I_s = qs ? p->I_s : 0.0, J = I_s + p->I_p + p->I_g / (i * i);
-    double T_in = qs ? u->T_s : shaft1_torque(p, y), T_2 = shaft2_torque(p, y), acc, T_p, T_g;
-    acc = (T_in - T_2 / i) / J;
-    ev->W_t = (p->I_g * acc / i + T_2) / ev->R_g;
+    int qs = hg_dyn_quasi_static_input(p), qo = hg_dyn_quasi_static_output(p);
+    double i = p->ratio, I_s = qs ? p->I_s : 0.0;
+    double J = I_s + p->I_p + (qo ? p->I_g + p->I_w : p->I_g) / (i * i);
+    double T_in = qs ? u->T_s : shaft1_torque(p, y), t2 = qo ? 0.0 : shaft2_torque(p, y);
+    double T_end = qo ? ev->T_w : t2, acc, T_p, T_g; /* the torque resisting at the body's end */
+    acc = (T_in - T_end / i) / J;
+    ev->T_2 = output_torque(p, qo, t2, ev->T_w, acc);
+    ev->W_t = (p->I_g * acc / i + ev->T_2) / ev->R_g;
     net_force_loads(ev);
     axle_losses(p, y, ev);
     /* the load the mesh friction sees: with the axle's bearing, seal and churning torques, which
      * are not small against the mesh's (a no-load drag of several N m at the pinion) */
-    acc = (T_in - T_2 / i + ev->axle.T_p + ev->axle.T_g / i) / J;
+    acc = (T_in - T_end / i + ev->axle.T_p + ev->axle.T_g / i) / J;
     ev->T_1 = T_in - I_s * acc;
-    ev->W_t = (p->I_g * acc / i + T_2 - ev->axle.T_g) / ev->R_g;
+    ev->T_2 = output_torque(p, qo, t2, ev->T_w, acc);
+    ev->W_t = (p->I_g * acc / i + ev->T_2 - ev->axle.T_g) / ev->R_g;
     net_force_loads(ev);
     losses(p, y, all_pairs, T_c_warm, ev);
     T_p = ev->T_fp + ev->axle.T_p;
     T_g = ev->T_fg + ev->axle.T_g;
-    ev->acc_p = (T_in - T_2 / i + T_p + T_g / i) / J;
+    ev->acc_p = (T_in - T_end / i + T_p + T_g / i) / J;
     ev->T_1 = T_in - I_s * ev->acc_p;
-    ev->W_t = (p->I_g * ev->acc_p / i + T_2 - T_g) / ev->R_g;
+    ev->T_2 = output_torque(p, qo, t2, ev->T_w, ev->acc_p);
+    ev->W_t = (p->I_g * ev->acc_p / i + ev->T_2 - T_g) / ev->R_g;
     net_force_loads(ev);
 }
 
@@ -373,7 +392,7 @@ static double wheel_end_torque(const hg_dyn_params *p, const hg_inputs *u, const
 void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const double *y,
                      int all_pairs, double T_c_warm[HG_MAX_PAIRS], hg_dyn_eval *ev)
 {
-    double d1, d2 = y[HG_Y_W_G] - y[HG_Y_W_W];
+    double d1, d2 = hg_dyn_quasi_static_output(p) ? 0.0 : y[HG_Y_W_G] - y[HG_Y_W_W];
     memset(ev, 0, offsetof(hg_dyn_eval, pair)); /* the pairs: losses() */
     ev->w_s = hg_dyn_input_speed(p, y);
     d1 = ev->w_s - y[HG_Y_W_P];
@@ -384,6 +403,7 @@ void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const
         rigid_mesh(p, u, y, all_pairs, T_c_warm, ev);
     } else {
         ev->T_1 = shaft1_torque(p, y);
+        ev->T_2 = shaft2_torque(p, y);
         axle_losses(p, y, ev);
         losses(p, y, all_pairs, T_c_warm, ev);
     }
@@ -405,7 +425,7 @@ void hg_dyn_evaluate(const hg_dyn_params *p, const hg_inputs *u, int mode, const
 void hg_dyn_derivatives(const hg_dyn_params *p, const hg_inputs *u, const double *y,
                         const hg_dyn_eval *ev, double *ydot)
 {
-    double T_1 = ev->T_1, T_2 = shaft2_torque(p, y);
+    double T_1 = ev->T_1, T_2 = ev->T_2;
     ydot[HG_Y_TWIST1] = y[HG_Y_W_S] - y[HG_Y_W_P];
     ydot[HG_Y_TWIST2] = y[HG_Y_W_G] - y[HG_Y_W_W];
     ydot[HG_Y_PHI_P] = y[HG_Y_W_P];
@@ -422,6 +442,10 @@ void hg_dyn_derivatives(const hg_dyn_params *p, const hg_inputs *u, const double
                          p->I_g; /* eq. 22, D3 of docs/physics.md §0 */
     }
     ydot[HG_Y_W_W] = (T_2 - ev->T_w) / p->I_w;                                     /* eq. 23 */
+    if (hg_dyn_quasi_static_output(p)) { /* the wheel end turns with the gear, the twist held */
+        ydot[HG_Y_TWIST2] = 0.0;
+        ydot[HG_Y_W_W] = ydot[HG_Y_W_G];
+    }
     ydot[HG_Y_GOV] = p->speed_governor ? y[HG_Y_W_W] - u->w_set / p->ratio : 0.0;
     ydot[HG_Y_E_IN] = u->T_s * ev->w_s;
     ydot[HG_Y_TWIST_HS] = ev->slip_hs;

@@ -53,6 +53,7 @@ typedef struct {
     int mesh;                    /* HG_MESH_MODEL_RIGID, _MEAN (constant k_m0, R_p0, no e_0, no
                                     backlash) or _VARYING */
     int quasi_static_input;      /* the input shaft quasi-static (input_shaft; rigid mesh only) */
+    int quasi_static_output;     /* the output shaft quasi-static (output_shaft; rigid mesh only) */
     hg_backlash backlash;        /* b = 0 unless the mesh varies */
     double k_m0, R_p0;           /* mean mesh stiffness [N/m] and radius [m] */
     double ratio;                /* N_g / N_p */
@@ -82,6 +83,8 @@ typedef struct {
     double W_coast;    /* compressive load on the back flank, max(-(k_m f_b + c g_b xdot), 0) [N] */
     double T_w;        /* wheel-end torque: input, governor or half-shaft [N m] */
     double T_1;        /* input shaft torque on the pinion [N m]: its spring's, or T_s - I_s acc
+                          when the shaft is quasi-static */
+    double T_2;        /* output shaft torque on the gear [N m]: its spring's, or T_w + I_w acc_g
                           when the shaft is quasi-static */
     double w_s;        /* speed of the input shaft's end [rad/s] (hg_dyn_input_speed) */
     double slip_hs;    /* w_w - w_wheel across the half-shaft [rad/s] (0 unless half_shaft) */
@@ -131,6 +134,12 @@ int hg_dyn_loaded_law(const hg_dyn_params *p);
  * spring and its end turns with the pinion (its twist and speed states stay constant). The rigid
  * mesh only. */
 int hg_dyn_quasi_static_input(const hg_dyn_params *p);
+
+/* Whether the output shaft is quasi-static (output_shaft: by default at the map level, as the
+ * input shaft): its mode between the gear and the wheel end (a few hundred hertz) is not resolved;
+ * the shaft is a massless spring carrying T_w + I_w acc_g, the wheel end turns with the gear (its
+ * speed state follows the gear's, its twist state stays constant). The rigid mesh only. */
+int hg_dyn_quasi_static_output(const hg_dyn_params *p);
 
 /* The speed of the input shaft's end [rad/s]: its state, or the pinion's when the shaft is
  * quasi-static. */

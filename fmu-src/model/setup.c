@@ -358,6 +358,20 @@ static int damping(hg_setup *s, const hg_logger *lg, hg_vars *v, char *err, size
     return 0;
 }
 
+/* output_shaft = auto takes the output shaft quasi-static at the map level only when its own
+ * mode lies above this [Hz]: a shaft between the gear and the wheel end (the paper's, about
+ * 330 Hz), not a half-shaft given as k_t2 (hypoid drive-cycle's, about 40 Hz), whose mode with the
+ * vehicle is a driveline's concern. */
+#define OUTPUT_SHAFT_QS_HZ 100.0
+
+/* The output shaft's own mode [Hz]: the wheel end I_w against the pinion-gear body
+ * I_g + i^2 (I_p + I_s) on k_t2. */
+static double output_shaft_hz(const hg_vars *v, double ratio)
+{
+    double J_g = v->I_g + ratio * ratio * (v->I_p + v->I_s);
+    return sqrt(v->k_t2 * (1.0 / v->I_w + 1.0 / J_g)) / HG_TWO_PI;
+}
+
 static void dynamics_params(hg_setup *s, const hg_vars *v)
 {
     hg_dyn_params *p = &s->p;
@@ -383,6 +397,11 @@ static void dynamics_params(hg_setup *s, const hg_vars *v)
         p->k_m0 = hg_mesh_law_tangent_mean(&s->gear, v->T_s < 0.0 ? HG_FLANK_COAST : HG_FLANK_DRIVE,
                                            fabs(v->T_s));
     p->ratio = (double)s->gear.N_g / s->gear.N_p;
+    p->quasi_static_output = v->output_shaft == HG_OUTPUT_SHAFT_QUASI_STATIC ||
+                             (v->output_shaft == HG_OUTPUT_SHAFT_AUTO &&
+                              v->mesh_model == HG_MESH_MODEL_RIGID &&
+                              v->friction_model == HG_FRICTION_MODEL_MAP &&
+                              output_shaft_hz(v, p->ratio) > OUTPUT_SHAFT_QS_HZ);
     p->gear = &s->gear;
     p->phase = s->phase;
     s->heat.valid = 0; /* emptied: the ledger is set up anew below */
@@ -491,6 +510,12 @@ int hg_setup_load(hg_setup *s, const char *resource_dir, const hg_logger *lg, hg
     dynamics_params(s, v);
     if (v->input_shaft == HG_INPUT_SHAFT_QUASI_STATIC && v->mesh_model != HG_MESH_MODEL_RIGID) {
         hg_errorf(err, errlen, "input_shaft = quasi_static joins the input shaft's end to the "
+                  "pinion-gear body of the rigid mesh: it needs mesh_model = rigid (mesh_model "
+                  "is %d)", v->mesh_model);
+        return -1;
+    }
+    if (v->output_shaft == HG_OUTPUT_SHAFT_QUASI_STATIC && v->mesh_model != HG_MESH_MODEL_RIGID) {
+        hg_errorf(err, errlen, "output_shaft = quasi_static joins the wheel end to the "
                   "pinion-gear body of the rigid mesh: it needs mesh_model = rigid (mesh_model "
                   "is %d)", v->mesh_model);
         return -1;

@@ -65,7 +65,7 @@ def reaching_levels(name, value, extra):
         return {"map"} if value == "map" else {"fast", "full"}
     if name == "mesh_model":
         return {"map", "fast"} if value == "rigid" else {"full"}
-    if name == "input_shaft":  # quasi-static on the rigid mesh only
+    if name in ("input_shaft", "output_shaft"):  # quasi-static on the rigid mesh only
         return {"map", "fast"} if value == "quasi_static" else set(LEVELS)
     if value == TABLE.start(name):  # the default: the levels are made with it
         return set(LEVELS)

@@ -367,7 +367,7 @@ def test_every_parameter_has_a_rule_for_the_levels_it_reaches():
     (not in the built-in maps: fast and full), or it belongs to the compliant mesh (full), or it
     is one of the levels' own settings; the groups do not overlap and name real parameters."""
     groups = [levels.REACHES_EVERY_LEVEL, levels.MESH_FRICTION, levels.MESH_DYNAMICS,
-              {"efficiency_map_file", "friction_model", "mesh_model", "input_shaft"}]
+              {"efficiency_map_file", "friction_model", "mesh_model", "input_shaft", "output_shaft"}]
     names = {v.name for v in TABLE.variables.values() if v.causality == "parameter"}
     assert sum(len(g) for g in groups) == len(set().union(*groups))
     assert set().union(*groups) == names

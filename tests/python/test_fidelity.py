@@ -182,9 +182,57 @@ def test_quasi_static_input_shaft_turns_with_the_pinion_and_balances_energy(fmu_
     assert q[-1, 1] == pytest.approx(d[-1, 1], rel=1e-4)  # the pinion's speed after 40 ms
 
 
+def test_quasi_static_output_shaft_turns_with_the_gear_and_balances_energy(fmu_path):
+    """output_shaft = quasi_static (the map level's by default): the wheel end turns with the gear
+    (w_w = w_g: the same derivative from the same start), the output shaft's twist stays put, the
+    audit closes; after a torque step the speeds follow the resolved shaft's without its ringing
+    (the body I_p + (I_g + I_w)/i^2 accelerates as the dynamic shaft's mean; both ends
+    torque-driven: a speed governor at the wheel end would see the resolved shaft's ringing)."""
+    def step(t):
+        return 100.0 if t < 0.02 else 160.0
+    out = {}
+    for shaft in ("quasi_static", "dynamic"):
+        from hypoid.fmu.instance import Instance
+        with Instance(fmu_path, name=shaft) as x:
+            x.start(dict(mesh_model="rigid", friction_model="ehl_thermal", output_shaft=shaft,
+                         rtol=1e-8, load_mode="torque", T_w=270.0))
+            rows = []
+            for k in range(60):
+                x.set("T_s", step(k * 1e-3))
+                x.step(1e-3)
+                rows.append(x.reals(["w_g", "w_w", "w_p"] + ENERGY))
+            out[shaft] = np.array(rows)
+    q, d = out["quasi_static"], out["dynamic"]
+    assert np.array_equal(q[:, 0], q[:, 1])
+    assert not np.allclose(d[:, 0], d[:, 1], rtol=1e-9, atol=0.0)
+    e_in, e_out, e_f, e_d, e_x, e_s = q[-1, 3:] - q[0, 3:]  # from the first step's end
+    assert abs(e_in - e_out - e_f - e_d + e_x - e_s) < 1e-6 * e_in
+    # the pinion's speed over the last 12 ms (about four periods of the shaft's mode)
+    assert q[-12:, 2].mean() == pytest.approx(d[-12:, 2].mean(), rel=5e-5)
+
+
+@pytest.mark.parametrize("k_t2,joined", [(8e5, True), (1.2e4, False)])
+def test_map_level_output_shaft_auto_by_its_mode(fmu_path, k_t2, joined):
+    """output_shaft = auto at the map level: the paper's output shaft (its mode about 330 Hz) is
+    quasi-static, the wheel end turning with the gear; a half-shaft given as k_t2 (hypoid
+    drive-cycle's 1.2e4 N m/rad: about 40 Hz, below 100 Hz) stays resolved."""
+    from hypoid.fmu.instance import Instance
+    with Instance(fmu_path) as x:
+        x.start(dict(mesh_model="rigid", friction_model="map", k_t2=k_t2, load_mode="torque",
+                     T_w=270.0))
+        rows = []
+        for k in range(20):
+            x.set("T_s", 100.0 if k < 5 else 160.0)
+            x.step(1e-3)
+            rows.append(x.reals(["w_g", "w_w"]))
+    rows = np.array(rows)
+    assert np.array_equal(rows[:, 0], rows[:, 1]) == joined
+
+
 @pytest.mark.parametrize("setting,words", [
     (dict(friction_model=5), "mesh_model = rigid"),
     (dict(input_shaft=2), "input_shaft = quasi_static"),
+    (dict(output_shaft=2), "output_shaft = quasi_static"),
 ])
 def test_map_level_and_quasi_static_input_shaft_need_the_rigid_mesh(harness, setting, words):
     h = harness()
