@@ -239,10 +239,16 @@ static double pair_moment(const hg_ledger *a, int k1, const hg_trb_oil *oil, dou
     return M;
 }
 
-/* torque of magnitude M opposing rotation at w, and the power it takes */
-static double opposing(double M, double w, double *T)
+/* the direction of rotation at w, regularised: w / sqrt(w^2 + SPIN_EPS^2) */
+static double spin(double w)
 {
-    double s = w / sqrt(w * w + SPIN_EPS * SPIN_EPS);
+    return w / sqrt(w * w + SPIN_EPS * SPIN_EPS);
+}
+
+/* torque of magnitude M opposing rotation at w (its direction s = spin(w)), and the power it
+ * takes */
+static double opposing(double M, double w, double s, double *T)
+{
     *T -= M * s;
     return M * s * w;
 }
@@ -250,7 +256,7 @@ static double opposing(double M, double w, double *T)
 void hg_ledger_losses(const hg_ledger *a, double w_p, double w_g, double W_t, double R_p,
                       double R_g, double T_oil, hg_ledger_eval *ev)
 {
-    double s = W_t >= 0.0 ? 1.0 : -1.0, rho, dT = T_oil - T_PRELOAD;
+    double s = W_t >= 0.0 ? 1.0 : -1.0, rho, dT = T_oil - T_PRELOAD, s_p, s_g;
     hg_trb_oil oil;
     *ev = (hg_ledger_eval){0};
     if (!a->full) return;
@@ -266,8 +272,11 @@ void hg_ledger_losses(const hg_ledger *a, double w_p, double w_g, double W_t, do
     /* the carrier: the ring-side bearing takes a thrust away from the ring's apex */
     shaft_bearings(a, &a->gear, &a->unit_g[s > 0.0], fabs(W_t) * R_g / a->gear.r_m,
                    HG_BRG_G_NEAR, ev->F_pre_g, ev);
-    ev->P_bearings_p = opposing(pair_moment(a, HG_BRG_P_HEAD, &oil, w_p, ev), w_p, &ev->T_p);
-    ev->P_bearings_g = opposing(pair_moment(a, HG_BRG_G_NEAR, &oil, w_g, ev), w_g, &ev->T_g);
+    s_p = spin(w_p), s_g = spin(w_g); /* once per shaft for all its losses */
+    ev->P_bearings_p =
+        opposing(pair_moment(a, HG_BRG_P_HEAD, &oil, w_p, ev), w_p, s_p, &ev->T_p);
+    ev->P_bearings_g =
+        opposing(pair_moment(a, HG_BRG_G_NEAR, &oil, w_g, ev), w_g, s_g, &ev->T_g);
     ev->P_bearings = ev->P_bearings_p + ev->P_bearings_g;
     ev->T_seal_p = a->T_seal_p;
     ev->T_seal_w = a->T_seal_w;
@@ -276,9 +285,10 @@ void hg_ledger_losses(const hg_ledger *a, double w_p, double w_g, double W_t, do
         ev->T_seal_p = hg_seal_torque_linke(a->d_seal_p, f);
         ev->T_seal_w = 2.0 * hg_seal_torque_linke(a->d_seal_w, f);
     }
-    ev->P_seals = opposing(ev->T_seal_p, w_p, &ev->T_p) + opposing(ev->T_seal_w, w_g, &ev->T_g);
+    ev->P_seals = opposing(ev->T_seal_p, w_p, s_p, &ev->T_p) +
+                  opposing(ev->T_seal_w, w_g, s_g, &ev->T_g);
     ev->P_churn = opposing(hg_churn_torque_at(&a->churn, &a->churn_terms, rho, ev->nu, w_g), w_g,
-                           &ev->T_g);
+                           s_g, &ev->T_g);
 }
 
 double hg_ledger_heat_out(const hg_ledger *a, double T_oil, double T_amb, double v_air)
