@@ -152,6 +152,15 @@ static int bearings(hg_ledger *a, const hg_vars *v, char *err, size_t errlen)
     return 0;
 }
 
+/* the radial loads of the pair k1, k1 + 1 per newton of F_t on the member (unit: the mesh
+ * force's components per newton) */
+static void unit_reactions(const hg_ledger *a, const hg_member_geom *m, const hg_mesh_force *unit,
+                           int k1, double *Fr_unit)
+{
+    hg_shaft_reactions(unit, m->r_m, a->x_brg[k1], a->x_brg[k1 + 1], &Fr_unit[k1],
+                       &Fr_unit[k1 + 1]);
+}
+
 int hg_ledger_setup(hg_ledger *a, const hg_vars *v, int gear_set_builtin,
                     const double *file_blank, const hg_lubricant *lub, char *err, size_t errlen)
 {
@@ -172,9 +181,11 @@ int hg_ledger_setup(hg_ledger *a, const hg_vars *v, int gear_set_builtin,
         return -1;
     hg_churn_terms_of(&a->churn, &a->churn_terms);
     for (k = 0; k < HG_N_BRG; k++) hg_trb_geometry_of(&a->brg[k], &a->brg_geom[k]);
-    for (k = 0; k < 2; k++) { /* the components are linear in F_t: per newton, once */
+    for (k = 0; k < 2; k++) { /* the components and reactions are linear in F_t: per newton */
         a->unit_p[k] = hg_mesh_force_components(&a->pinion, 1.0, k ? 1.0 : -1.0, 1);
         a->unit_g[k] = hg_mesh_force_components(&a->gear, 1.0, k ? 1.0 : -1.0, 0);
+        unit_reactions(a, &a->pinion, &a->unit_p[k], HG_BRG_P_HEAD, a->Fr_unit[k]);
+        unit_reactions(a, &a->gear, &a->unit_g[k], HG_BRG_G_NEAR, a->Fr_unit[k]);
     }
     a->T_seal_p = hg_seal_torque(v->d_seal_p);
     a->T_seal_w = 2.0 * hg_seal_torque(v->d_seal_w);
@@ -208,18 +219,15 @@ double hg_ledger_nu(const hg_lubricant *lub, double T)
     return nu_of(lub, log(lub->vogel_a), T, hg_ledger_rho(lub, T));
 }
 
-/* bearing loads of one shaft from the mesh force on its member (F_t times its components per
- * newton, unit) and the pair's preload */
-static void shaft_bearings(const hg_ledger *a, const hg_member_geom *m, const hg_mesh_force *unit,
+/* bearing loads of one shaft from the mesh force F_t >= 0 on its member (F_t times its axial
+ * component and the radial loads per newton, unit and Fr_unit) and the pair's preload */
+static void shaft_bearings(const hg_ledger *a, const hg_mesh_force *unit, const double *Fr_unit,
                            double F_t, int k1, double F_pre, hg_ledger_eval *ev)
 {
-    hg_mesh_force f;
     int k2 = k1 + 1;
-    f.F_t = F_t;
-    f.F_a = F_t * unit->F_a;
-    f.F_r = F_t * unit->F_r;
-    hg_shaft_reactions(&f, m->r_m, a->x_brg[k1], a->x_brg[k2], &ev->Fr[k1], &ev->Fr[k2]);
-    hg_trb_pair_axial(ev->Fr[k1], a->brg[k1].Y, ev->Fr[k2], a->brg[k2].Y, f.F_a, F_pre,
+    ev->Fr[k1] = F_t * Fr_unit[k1];
+    ev->Fr[k2] = F_t * Fr_unit[k2];
+    hg_trb_pair_axial(ev->Fr[k1], a->brg[k1].Y, ev->Fr[k2], a->brg[k2].Y, F_t * unit->F_a, F_pre,
                       &ev->Fa[k1], &ev->Fa[k2]);
 }
 
@@ -267,11 +275,11 @@ void hg_ledger_losses(const hg_ledger *a, double w_p, double w_g, double W_t, do
                                  a->x_brg[HG_BRG_P_TAIL] - a->x_brg[HG_BRG_P_HEAD], dT);
     ev->F_pre_g = hg_trb_preload(a->F_pre_g, a->k_ax_g, a->d_alpha,
                                  a->x_brg[HG_BRG_G_NEAR] - a->x_brg[HG_BRG_G_FAR], dT);
-    shaft_bearings(a, &a->pinion, &a->unit_p[s > 0.0], fabs(W_t) * R_p / a->pinion.r_m,
-                   HG_BRG_P_HEAD, ev->F_pre_p, ev);
+    shaft_bearings(a, &a->unit_p[s > 0.0], a->Fr_unit[s > 0.0],
+                   fabs(W_t) * R_p / a->pinion.r_m, HG_BRG_P_HEAD, ev->F_pre_p, ev);
     /* the carrier: the ring-side bearing takes a thrust away from the ring's apex */
-    shaft_bearings(a, &a->gear, &a->unit_g[s > 0.0], fabs(W_t) * R_g / a->gear.r_m,
-                   HG_BRG_G_NEAR, ev->F_pre_g, ev);
+    shaft_bearings(a, &a->unit_g[s > 0.0], a->Fr_unit[s > 0.0],
+                   fabs(W_t) * R_g / a->gear.r_m, HG_BRG_G_NEAR, ev->F_pre_g, ev);
     s_p = spin(w_p), s_g = spin(w_g); /* once per shaft for all its losses */
     ev->P_bearings_p =
         opposing(pair_moment(a, HG_BRG_P_HEAD, &oil, w_p, ev), w_p, s_p, &ev->T_p);

@@ -25,6 +25,8 @@ typedef struct {
     hg_mesh_force unit_p[2], unit_g[2]; /* mesh force components per newton of F_t on the
                                            coast [0] and drive [1] flank (pinion, gear) */
     double x_brg[HG_N_BRG];   /* axial positions from the member's mean point [m] */
+    double Fr_unit[2][HG_N_BRG]; /* the bearings' radial loads per newton of F_t (by the sign
+                                  * of the mesh force, as unit_p, unit_g) [N/N] */
     double F_pre_p, F_pre_g;  /* preloads of the pinion and carrier pairs as set at 20 degC [N] */
     double k_ax_p, k_ax_g;    /* axial stiffness of the preloaded pairs [N/m] */
     double d_alpha;           /* thermal expansion of the carrier less that of steel [1/K] */
