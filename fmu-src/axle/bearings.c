@@ -98,7 +98,7 @@ hg_trb_moment hg_trb_friction_at(const hg_trb *b, const hg_trb_geometry *g,
                                  const hg_trb_speed *s, double F_r, double F_a)
 {
     hg_trb_moment m;
-    double G_rr = g->G_rr0 * pow(F_r + SKF_R2 * b->Y * F_a, 0.31);
+    double G_rr = g->G_rr0 * exp(0.31 * log(F_r + SKF_R2 * b->Y * F_a)); /* 0 at no load */
     double G_sl = g->G_sl0 * (F_r + SKF_S2 * b->Y * F_a);
     double phi_ish = 1.0 / (1.0 + 1.84e-9 * g->dm128 * s->n128v064);
     double phi_rs = hg_trb_phi_rs(b->K_rs, s->vn, g->rs);
