@@ -10,7 +10,7 @@
 
 double hg_h_natural(double dT, double L)
 {
-    return 1.42 * pow(fabs(dT) / L, 0.25);
+    return 1.42 * sqrt(sqrt(fabs(dT) / L)); /* ^(1/4) */
 }
 
 /* Below it the mixed correlation lies under the laminar one (they cross at 5.0e5; at 4e5 the
