@@ -100,7 +100,7 @@ hg_trb_moment hg_trb_friction(const hg_trb *b, double F_r, double F_a, double nu
  * (once per bearing), the oil's viscosity terms (once per evaluation: every shaft shares them),
  * the speed terms (once per shaft and evaluation: the bearings of a shaft share them), then the
  * moment at the loads. Powers as exponentials of logarithms, so an evaluation of a shaft's two
- * bearings takes one logarithm (and the oil's one) and five exponentials, and for each bearing's
+ * bearings takes one logarithm (and the oil's one) and four exponentials, and for each bearing's
  * load power (^0.31) a logarithm and an exponential more. */
 typedef struct {
     double dm;     /* mean diameter [mm] */
