@@ -82,6 +82,7 @@ void hg_trb_speed_at(const hg_trb_oil *o, double omega, hg_trb_speed *s)
     double n = fabs(omega) * 30.0 / HG_PI; /* r/min */
     double ln_n = log(n), ln_v = o->ln_v;  /* n = 0: -inf, and every power of n below 0 */
     double vn04 = exp(0.4 * (ln_n + ln_v)); /* (nu n)^0.4: (nu n)^1.4 and ^0.6 from it */
+    s->ln_n = ln_n;
     s->vn = o->v * n;
     s->n128v064 = exp(1.28 * ln_n + 0.64 * ln_v);
     s->vn14 = s->vn * vn04;

@@ -116,6 +116,7 @@ typedef struct {
 } hg_trb_oil;
 
 typedef struct {
+    double ln_n;    /* ln(n [r/min]) */
     double vn;      /* nu n [mm^2/s r/min] */
     double n128v064; /* n^1.28 nu^0.64 */
     double vn14, vn06; /* (nu n)^1.4, (nu n)^0.6 */

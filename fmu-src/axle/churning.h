@@ -49,10 +49,16 @@ typedef struct {
     double S_m, R3;                 /* [m^2], [m^3] */
     double ln_low0, ln_low_re_c;    /* ln(1.366 (h/D_p)^0.45 (V_0/D_p^3)^0.1), 0.21 ln(6000 b/h) */
     double ln_high0, ln_high_b;     /* ln(3.644 (h/D_p)^0.1 (V_0/D_p^3)^-0.35), 0.85 ln(b/D_p) */
+    double ln_R_g, ln_R_b;          /* ln(R_p / g), ln(R_p b): ln Fr and ln Re from ln omega */
 } hg_churn_terms;
 void hg_churn_terms_of(const hg_churn_geom *g, hg_churn_terms *t);
 double hg_churn_cm_at(const hg_churn_geom *g, const hg_churn_terms *t, double nu, double omega);
 double hg_churn_torque_at(const hg_churn_geom *g, const hg_churn_terms *t, double rho, double nu,
                           double omega);
+/* The same from ln nu and ln |omega| given as well (a caller that has them), so that Fr and Re
+ * need no logarithm of their own: ln Fr = 2 ln omega + ln(R_p / g), ln Re = ln omega + ln(R_p b)
+ * - ln nu (equal to hg_churn_torque_at's to rounding). */
+double hg_churn_torque_ln(const hg_churn_geom *g, const hg_churn_terms *t, double rho, double nu,
+                          double ln_nu, double omega, double ln_omega);
 
 #endif

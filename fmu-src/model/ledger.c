@@ -17,6 +17,8 @@
 #define NU_40_LINKE_MIN 0.2e-6 /* lg lg(nu_40 + 0.8) exists for nu_40 > 0.2 mm^2/s [m^2/s] */
 #define T_PRELOAD 293.15   /* the workshop sets the preloads at 20 degC [K] */
 #define ALPHA_STEEL 11.5e-6 /* thermal expansion of the steel shaft and bearings [1/K] (docs/axle.md) */
+#define LN_MM2_PER_M2 13.815510557964274   /* ln(1e6) */
+#define LN_RPM_PER_RAD_S 2.2564674958127555 /* ln(30 / pi) */
 #define Y0_PER_Y 0.55      /* ISO 76: Y_0 = 0.22 cot(alpha), Y = 0.4 cot(alpha) for tapered rollers */
 
 /* The built-in gear sets' blanks: Paouris et al. 2016 Table 1 and the blank data of
@@ -231,16 +233,14 @@ static void shaft_bearings(const hg_ledger *a, const hg_mesh_force *unit, const 
                       &ev->Fa[k1], &ev->Fa[k2]);
 }
 
-/* frictional moment of the pair k1, k1 + 1 [N m] */
-static double pair_moment(const hg_ledger *a, int k1, const hg_trb_oil *oil, double w,
+/* frictional moment of the pair k1, k1 + 1 [N m] at their shaft's speed terms sp */
+static double pair_moment(const hg_ledger *a, int k1, const hg_trb_speed *sp,
                           const hg_ledger_eval *ev)
 {
     double M = 0.0;
-    hg_trb_speed sp;
     int k;
-    hg_trb_speed_at(oil, w, &sp); /* the shaft's: both bearings turn at w */
     for (k = k1; k <= k1 + 1; k++) {
-        hg_trb_moment m = hg_trb_friction_at(&a->brg[k], &a->brg_geom[k], &sp, ev->Fr[k],
+        hg_trb_moment m = hg_trb_friction_at(&a->brg[k], &a->brg_geom[k], sp, ev->Fr[k],
                                              ev->Fa[k]);
         M += m.M_rr + m.M_sl;
     }
@@ -266,6 +266,7 @@ void hg_ledger_losses(const hg_ledger *a, double w_p, double w_g, double W_t, do
 {
     double s = W_t >= 0.0 ? 1.0 : -1.0, rho, dT = T_oil - T_PRELOAD, s_p, s_g;
     hg_trb_oil oil;
+    hg_trb_speed sp_p, sp_g; /* the shafts': both bearings of a shaft turn at its speed */
     *ev = (hg_ledger_eval){0};
     if (!a->full) return;
     rho = hg_ledger_rho(a->lub, T_oil);
@@ -281,10 +282,10 @@ void hg_ledger_losses(const hg_ledger *a, double w_p, double w_g, double W_t, do
     shaft_bearings(a, &a->unit_g[s > 0.0], a->Fr_unit[s > 0.0],
                    fabs(W_t) * R_g / a->gear.r_m, HG_BRG_G_NEAR, ev->F_pre_g, ev);
     s_p = spin(w_p), s_g = spin(w_g); /* once per shaft for all its losses */
-    ev->P_bearings_p =
-        opposing(pair_moment(a, HG_BRG_P_HEAD, &oil, w_p, ev), w_p, s_p, &ev->T_p);
-    ev->P_bearings_g =
-        opposing(pair_moment(a, HG_BRG_G_NEAR, &oil, w_g, ev), w_g, s_g, &ev->T_g);
+    hg_trb_speed_at(&oil, w_p, &sp_p);
+    hg_trb_speed_at(&oil, w_g, &sp_g);
+    ev->P_bearings_p = opposing(pair_moment(a, HG_BRG_P_HEAD, &sp_p, ev), w_p, s_p, &ev->T_p);
+    ev->P_bearings_g = opposing(pair_moment(a, HG_BRG_G_NEAR, &sp_g, ev), w_g, s_g, &ev->T_g);
     ev->P_bearings = ev->P_bearings_p + ev->P_bearings_g;
     ev->T_seal_p = a->T_seal_p;
     ev->T_seal_w = a->T_seal_w;
@@ -295,8 +296,11 @@ void hg_ledger_losses(const hg_ledger *a, double w_p, double w_g, double W_t, do
     }
     ev->P_seals = opposing(ev->T_seal_p, w_p, s_p, &ev->T_p) +
                   opposing(ev->T_seal_w, w_g, s_g, &ev->T_g);
-    ev->P_churn = opposing(hg_churn_torque_at(&a->churn, &a->churn_terms, rho, ev->nu, w_g), w_g,
-                           s_g, &ev->T_g);
+    /* the churning's ln nu and ln |w_g| from the bearings' ln(nu [mm^2/s]), ln(n [r/min]) */
+    ev->P_churn = opposing(hg_churn_torque_ln(&a->churn, &a->churn_terms, rho, ev->nu,
+                                              oil.ln_v - LN_MM2_PER_M2, w_g,
+                                              sp_g.ln_n - LN_RPM_PER_RAD_S),
+                           w_g, s_g, &ev->T_g);
 }
 
 double hg_ledger_heat_out(const hg_ledger *a, double T_oil, double T_amb, double v_air)
