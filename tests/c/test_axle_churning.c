@@ -50,5 +50,20 @@ int main(void)
             prev = c;
         }
     }
+    /* hg_churn_torque_ln, from ln nu and ln |omega|: the hand-calculated torques above in both
+     * regimes, the same to rounding as hg_churn_torque_at, 0 at rest */
+    {
+        hg_churn_terms t;
+        hg_churn_terms_of(&g, &t);
+        CHECK_CLOSE(hg_churn_torque_ln(&g, &t, 870.0, 1e-4, log(1e-4), 75.6, log(75.6)),
+                    0.1156477, 1e-6, 0);
+        CHECK_CLOSE(hg_churn_torque_ln(&g, &t, 870.0, 2.7e-4, log(2.7e-4), -30.0, log(30.0)),
+                    8.258422e-2, 1e-6, 0);
+        CHECK_CLOSE(hg_churn_torque_ln(&g, &t, 870.0, 1.2e-5, log(1.2e-5), 300.0, log(300.0)),
+                    0.2624926, 1e-6, 0);
+        CHECK_CLOSE(hg_churn_torque_ln(&g, &t, 870.0, 2.7e-4, log(2.7e-4), 30.0, log(30.0)),
+                    hg_churn_torque_at(&g, &t, 870.0, 2.7e-4, 30.0), 1e-14, 0);
+        CHECK(hg_churn_torque_ln(&g, &t, 870.0, 1e-4, log(1e-4), 0.0, log(0.0)) == 0.0);
+    }
     CHECK_DONE();
 }
