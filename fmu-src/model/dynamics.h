@@ -105,9 +105,8 @@ typedef struct {
     hg_level_pick pick; /* the levels around the filtered torque T_km on that flank */
     int located;      /* cell holds the mesh angle's cell of the phase table */
     double W_pair[HG_MAX_PAIRS];
-    /* Not zeroed with the rest (the right-hand side's largest part): every field the friction
-     * model's (hg_friction_pair), F_f alone and F_v = 0 from the friction tables, zero without
-     * pair friction (the map level, none). */
+    /* Every field the friction model's (hg_friction_pair), F_f alone and F_v = 0 from the
+     * friction tables, zero without pair friction (the map level, none). */
     hg_pair_friction pair[HG_MAX_PAIRS];
     hg_pt_cell cell;  /* set when located */
 } hg_dyn_eval;
