@@ -175,6 +175,35 @@ static void test_map_level_quasi_static_input(void)
     CHECK(ev.w_s == 300.0 && ydot[HG_Y_E_IN] == 800.0 * 300.0);
 }
 
+/* The output shaft quasi-static (output_shaft: the map level's by default): the wheel end joins
+ * the body (I_p + (I_g + I_w) / i^2), resisted by the wheel-end torque T_w; the shaft carries
+ * T_2 = T_w + I_w acc / i from the gear, its twist and damper act no more and the wheel end's
+ * speed follows the gear's. */
+static void test_quasi_static_output(void)
+{
+    hg_dyn_params p = params(HG_MESH_MODEL_RIGID);
+    hg_inputs u = inputs(0.0, 160.0, 0.0);
+    double y[HG_NY] = {0}, ydot[HG_NY], i = N_G / N_P, J = 1.4e-2 + (0.29 + 0.29) / (i * i);
+    double acc = (800.0 - 160.0 / i) / J, T_2 = 160.0 + 0.29 * acc / i;
+    hg_dyn_eval ev;
+    p.quasi_static_output = 1;
+    p.c_t2 = 50.0;
+    y[HG_Y_TWIST1] = 1e-3;  /* T_1 = 800 N m */
+    y[HG_Y_TWIST2] = 5e-3;  /* not a state here: no torque of its own */
+    y[HG_Y_W_G] = 100.0 / i;
+    y[HG_Y_W_W] = 3.0;      /* nor does the speed difference drive a damper */
+    evaluate(&p, &u, y, ydot, &ev);
+    CHECK_CLOSE(ydot[HG_Y_W_P], acc, 1e-12, 0.0);
+    CHECK_CLOSE(ydot[HG_Y_W_G], acc / i, 1e-12, 0.0);
+    CHECK(ydot[HG_Y_W_W] == ydot[HG_Y_W_G] && ydot[HG_Y_TWIST2] == 0.0);
+    CHECK_CLOSE(ev.T_2, T_2, 1e-12, 0.0);
+    CHECK_CLOSE(ev.W_t, (0.29 * acc / i + T_2) / (21.01e-3 * i), 1e-12, 0.0);
+    CHECK(ydot[HG_Y_E_DAMP] == 0.0);
+    p.mesh = HG_MESH_MODEL_MEAN; /* the compliant mesh: the shaft's spring whatever the flag */
+    evaluate(&p, &u, y, ydot, &ev);
+    CHECK_CLOSE(ev.T_2, 8e5 * 5e-3 + 50.0 * (100.0 / i - 3.0), 1e-12, 0.0);
+}
+
 /* The speed governor's wheel torque: T_s i + K_p (w_w - w_set / i) + K_i * integral. */
 static void test_governor(void)
 {
@@ -265,6 +294,7 @@ int main(void)
     test_known_twist();
     test_rigid_mesh();
     test_map_level_quasi_static_input();
+    test_quasi_static_output();
     test_governor();
     test_power_balance(HG_MESH_MODEL_MEAN);
     test_power_balance(HG_MESH_MODEL_RIGID);
