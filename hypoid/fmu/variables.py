@@ -11,7 +11,7 @@ from typing import NamedTuple
 
 MODEL_NAME = 'HypoidGearPair'
 MODEL_VERSION = '0.1.0'
-GUID = '{e06a4c9e-2982-511d-8ab7-601d3fe8664e}'
+GUID = '{03bcbc61-782e-5f1c-bc9d-66ca0b96a4f5}'
 
 
 class Variable(NamedTuple):
@@ -250,7 +250,7 @@ _TABLE = (
     Variable(name='N_g', vr=213, causality='calculatedParameter', variability='fixed', type='Integer', enumeration=None, unit=None, display_unit=None, start=None, min=None, max=None, description='gear teeth of the gear set'),
     Variable(name='ratio', vr=214, causality='calculatedParameter', variability='fixed', type='Real', enumeration=None, unit='', display_unit=None, start=None, min=None, max=None, description='gear ratio i = N_g/N_p'),
     Variable(name='twist_1', vr=215, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad', display_unit=None, start=None, min=None, max=None, description='input-shaft twist phi_s - phi_p (docs/physics.md §8.1)'),
-    Variable(name='twist_2', vr=216, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad', display_unit=None, start=None, min=None, max=None, description='output-shaft twist phi_g - phi_w (docs/physics.md §8.1)'),
+    Variable(name='twist_2', vr=216, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad', display_unit=None, start=None, min=None, max=None, description='output-shaft twist phi_g - phi_w (docs/physics.md §8.1); it keeps its start value where the output shaft is quasi-static (output_shaft: the map level by default), and w_w follows w_g'),
     Variable(name='phi_p', vr=217, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad', display_unit=None, start=None, min=None, max=None, description='pinion angle, the phase of the mesh cycle; wrapped by whole load-share periods at events'),
     Variable(name='w_s_state', vr=218, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad/s', display_unit=None, start=None, min=None, max=None, description="speed of the input shaft's end as the integrator carries it: the output w_s, except at the map level, whose input shaft is quasi-static (w_s = w_p) and this state keeps its start value"),
     Variable(name='governor_integral', vr=219, causality='local', variability='continuous', type='Real', enumeration=None, unit='rad', display_unit=None, start=None, min=None, max=None, description="integral of the speed governor's wheel-speed error (load_mode = speed; else constant)"),
