@@ -33,6 +33,9 @@ SCENARIOS = {
     "set1_mean_mesh_coulomb_torque_mode": {"mesh_model": "mean", "friction_model": "coulomb",
                                            "load_mode": "torque", "T_s": 100.0,
                                            SPEED_KEY: 1500.0},
+    # the whole axle's ledger (churning, bearings, seals) in a 20 degC bath
+    "set1_os962_150Nm_1500rpm_axle_full_bath20C": {"axle_losses": "full", "T_s": 150.0,
+                                                   SPEED_KEY: 1500.0, "T_bath": 293.15},
 }
 QUANTITIES = ("eta_rms", "eta_energy", "P_loss_mean_W", "speed_mean_rpm", "DTE_mean_um",
               "DTE_pp_um", "DTE_min_minus_b_um", "contact_loss_fraction", "W_t_mean_N",

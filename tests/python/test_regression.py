@@ -25,8 +25,11 @@ def test_reference_covers_every_scenario_and_quantity():
     ref, params = regress.read_reference()
     tol = regress.read_tolerances()
     assert set(ref) == set(regress.SCENARIOS)
+    axle = {n for n, p in regress.SCENARIOS.items() if p.get("axle_losses") == "full"}
+    assert axle, "no scenario covers the axle's ledger"
     for name, qs in ref.items():
-        assert set(qs) == set(regress.QUANTITIES), name
+        extra = regress.AXLE_QUANTITIES if name in axle else ()
+        assert set(qs) == set(regress.QUANTITIES + extra), name
     assert set(tol) == set(regress.QUANTITIES) | set(regress.AXLE_QUANTITIES)
 
 
