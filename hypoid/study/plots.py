@@ -13,16 +13,25 @@ from hypoid.study import regime, results  # noqa: E402
 from hypoid.study import tables as tb  # noqa: E402
 
 DPI = 120
+# zlib's level for the PNGs: the same pixels as the default 6 in slightly larger files, for less
+# of the encoding's CPU (docs/decisions.md, "The study's figures")
+PNG_COMPRESS_LEVEL = 4
 TORQUE_COLORS = {50.0: "tab:red", 100.0: "tab:blue", 200.0: "tab:green", 300.0: "tab:purple"}
 LUB_COLORS = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple"]
 SET_COLORS = {1: "tab:blue", 2: "tab:orange", 3: "tab:green"}
 
 
 def _save(fig, out, name):
+    """out/name.png at DPI, cropped to what the figure draws plus savefig.pad_inches: the picture
+    of bbox_inches="tight", byte for byte, without the extra draw that savefig makes to measure
+    the figure (get_tightbbox lays it out to measure it, without drawing it)."""
     out = pathlib.Path(out)
     out.mkdir(parents=True, exist_ok=True)
     path = out / f"{name}.png"
-    fig.savefig(path, dpi=DPI, bbox_inches="tight")
+    fig.set_dpi(DPI)  # measured at the resolution it is drawn at
+    bbox = fig.get_tightbbox(fig.canvas.get_renderer())
+    fig.savefig(path, dpi=DPI, bbox_inches=bbox.padded(matplotlib.rcParams["savefig.pad_inches"]),
+                pil_kwargs={"compress_level": PNG_COMPRESS_LEVEL})
     plt.close(fig)
     return path
 
