@@ -40,6 +40,10 @@ def expected_errors():
 
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
+    # numpy's OpenBLAS starts a thread per core that spins after its calls; the tools' matrices
+    # have a few rows (modes, Fourier series), so those threads only take CPU from the workers
+    # (set before a tool imports numpy; a value in the environment is kept)
+    os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
     if not argv or argv[0] in ("-h", "--help"):
         print(usage())
         return 0 if argv else 2
