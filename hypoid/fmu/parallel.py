@@ -93,6 +93,14 @@ def guarded(sha, data, fn, *args):
                 "traceback": traceback.format_exc(limit=5), "cpu_s": time.process_time() - t0}
 
 
+def each(inst, sha, items):
+    """A task of tasks: items [(fn, args)] in turn on this worker, each as guarded runs it (a
+    failure ends only its own item; the next gets a new instance, made from the FMU's bytes the
+    process was forked with): {'status': 'ok', 'results': [...]}. `inst` is the instance the
+    first item runs on."""
+    return {"status": "ok", "results": [guarded(sha, None, fn, *args) for fn, args in items]}
+
+
 # ---------------------------------------------------------------------------- client side
 def _forget_parent_instances():
     """A forked worker starts without the instances of the process it was forked from, and leaves
@@ -165,6 +173,12 @@ class LocalPool:
         for p in processes:
             with contextlib.suppress(Exception):
                 p.join(5.0)
+
+
+def inherits(client, fmu):
+    """Whether client's workers hold fmu's bytes from their fork (a LocalPool forked after the
+    FMU was read), so that they can make a new instance without being sent them (each)."""
+    return isinstance(client, LocalPool) and fmu.sha in client.inherited
 
 
 def call_all(calls, workers=2):

@@ -40,6 +40,12 @@ def key_of(params, settings, fmu, **extra):
                               **extra})
 
 
+# Steady points a task of a local pool runs in turn (sweep.execute): the points of a grid come in
+# order of speed, neighbouring speeds share the friction model's node tables, and each worker
+# process solves the tables it uses for itself; one point a task had both workers solve most of
+# them (docs/decisions.md, "The study's steady points a few at a time")
+POINTS_PER_TASK = 16
+
 # ---------------------------------------------------------------------------- worker tasks
 def point_task(inst, params, settings, trace):
     row, window = steady.run_point(inst, params, settings, trace)
@@ -125,13 +131,33 @@ class SweepsPlan:
 
 
 def execute(plans, fmu, client=None, desc="tasks"):
-    """Runs the plans' tasks together (in list order) and returns each plan's tidy table."""
+    """Runs the plans' tasks together (in list order) and returns each plan's tidy table. On
+    local forked workers the steady points go POINTS_PER_TASK at a time (parallel.each)."""
     tasks, owner = [], {}
+    per_task = POINTS_PER_TASK if parallel.inherits(client, fmu) else 1
     for i, plan in enumerate(plans):
-        for key, fn, args in plan.tasks:
-            tasks.append(((i, key), fn, args))
-            owner[(i, key)] = plan
-    parallel.run(tasks, fmu, lambda k, res: owner[k].on_result(k[1], res), client, desc=desc)
+        n = per_task if isinstance(plan, PointsPlan) else 1
+        for j in range(0, len(plan.tasks), n):
+            group = plan.tasks[j:j + n]
+            if len(group) == 1:
+                key, fn, args = group[0]
+                tasks.append(((i, key), fn, args))
+                owner[(i, key)] = (plan, None)
+            else:
+                tasks.append(((i, ("points", j)), parallel.each,
+                              (fmu.sha, [(fn, args) for _, fn, args in group])))
+                owner[(i, ("points", j))] = (plan, [key for key, _, _ in group])
+
+    def deliver(k, res):
+        plan, keys = owner[k]
+        if keys is None:
+            plan.on_result(k[1], res)
+            return
+        results = res.get("results") or [dict(res) for _ in keys]  # the whole task failed
+        for key, r in zip(keys, results):
+            plan.on_result(key, r)
+
+    parallel.run(tasks, fmu, deliver, client, desc=desc)
     return [plan.finish() for plan in plans]
 
 

@@ -237,6 +237,36 @@ def test_local_pool_and_a_dask_scheduler_match_the_serial_run(tmp_path, fmu_path
             np.testing.assert_array_equal(df[k].to_numpy(), serial[k].to_numpy(), err_msg=k)
 
 
+def test_local_pool_runs_points_a_few_at_a_time_each_on_its_own(tmp_path, fmu_path, monkeypatch):
+    """sweep.execute hands a local pool's workers POINTS_PER_TASK points at a time: a failure ends
+    its own point only (the next one gets a new instance), and the rows are the serial run's."""
+    monkeypatch.setattr(sweep, "POINTS_PER_TASK", 3)
+    pts = sweep.complete([{"T_s": 50, "speed_rpm": 1500},
+                          {"T_s": 50, "speed_rpm": 2000,
+                           "lubricant_file": str(tmp_path / "missing.txt")},
+                          {"T_s": 50, "speed_rpm": 2500}, {"T_s": 50, "speed_rpm": 3500}])
+    fmu = parallel.FmuRef(fmu_path)
+    serial = sweep.run_points(pts, tmp_path / "serial", fmu, None, QUICK)
+    with parallel.executor(workers=2) as pool:
+        plan = sweep.PointsPlan(pts, tmp_path / "local", fmu, QUICK)
+        submitted = []
+        run = parallel.run
+        monkeypatch.setattr(parallel, "run", lambda tasks, *a, **k: (submitted.extend(tasks),
+                                                                     run(tasks, *a, **k)))
+        local = sweep.execute([plan], fmu, pool)[0]
+    assert [fn for _, fn, _ in submitted] == [parallel.each, sweep.point_task]
+    for df in (serial, local):
+        bad = df["lubricant_file"] != ""
+        assert (df.loc[bad, "status"] == "error").all() and (df.loc[~bad, "status"] == "ok").all()
+        assert "missing.txt" in df.loc[bad, "message"].iloc[0]
+    ok = local["status"] == "ok"
+    assert local.loc[ok, "worker_pid"].iloc[:2].nunique() == 1  # the first task's two points
+    for k in OUTS:
+        np.testing.assert_array_equal(local.loc[ok, k].to_numpy(),
+                                      serial.loc[serial["status"] == "ok", k].to_numpy(),
+                                      err_msg=k)
+
+
 def test_call_all_runs_the_calls_in_order_on_other_processes_or_here():
     calls = [functools.partial(divmod, n, 7) for n in range(5)] + [os.getpid]
     here = parallel.call_all(calls, workers=0)
