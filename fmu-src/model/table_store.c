@@ -53,14 +53,28 @@ static entry *entry_of(const void *table)
 
 #define FNV_PRIME 0x100000001b3ULL
 
+/* One step of both lanes: FNV-1a's, and a second, unrelated one (rotate, xor, multiply by the
+ * golden ratio's odd 64-bit constant). Each is a bijection of its lane, so any one changed word
+ * changes both. */
+static void mix(hg_store_id *id, unsigned long long w)
+{
+    id->a = (id->a ^ w) * FNV_PRIME;
+    id->b = ((id->b << 5 | id->b >> 59) ^ w) * 0x9e3779b97f4a7c15ULL;
+}
+
+/* The bytes as little-endian 64-bit words (both readers of the shipped tables are), the tail byte
+ * by byte: eight times faster than byte by byte, which matters because every instance hashes its
+ * gear set (94 kB) for two keys. */
 hg_store_id hg_store_hash(hg_store_id id, const void *data, size_t n)
 {
     const unsigned char *p = data;
+    unsigned long long w;
     size_t k;
-    for (k = 0; k < n; k++) {
-        id.a = (id.a ^ p[k]) * FNV_PRIME;                             /* FNV-1a */
-        id.b = ((id.b << 5 | id.b >> 59) ^ p[k]) * 0x9e3779b97f4a7c15ULL; /* a second, unrelated */
+    for (k = 0; k + sizeof w <= n; k += sizeof w) {
+        memcpy(&w, p + k, sizeof w);
+        mix(&id, w);
     }
+    for (; k < n; k++) mix(&id, p[k]);
     return id;
 }
 
