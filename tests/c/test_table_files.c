@@ -92,6 +92,27 @@ static void test_missing_file_reads_nothing(void)
     CHECK(d[0] == 0.0 && d[3] == 0.0); /* zeroed for the build */
 }
 
+/* The store's key takes the bytes as 64-bit words and the tail one by one: a flip of any bit,
+ * in a word or in the tail, changes both lanes, and the key depends on the length. */
+static void test_store_key_sees_every_bit(void)
+{
+    unsigned char b[37];
+    hg_store_id base, id;
+    size_t k;
+    int bit;
+    for (k = 0; k < sizeof b; k++) b[k] = (unsigned char)(k * 37 + 11);
+    base = hg_store_hash(hg_store_id_of("test"), b, sizeof b);
+    for (k = 0; k < sizeof b; k++)
+        for (bit = 0; bit < 8; bit++) {
+            b[k] ^= (unsigned char)(1u << bit);
+            id = hg_store_hash(hg_store_id_of("test"), b, sizeof b);
+            CHECK(id.a != base.a && id.b != base.b);
+            b[k] ^= (unsigned char)(1u << bit);
+        }
+    id = hg_store_hash(hg_store_id_of("test"), b, sizeof b - 1);
+    CHECK(id.a != base.a && id.b != base.b);
+}
+
 static unsigned long long rng = 0x9e3779b97f4a7c15ULL;
 static size_t below(size_t n)
 {
@@ -113,6 +134,7 @@ int main(void)
     make_dir(dir);
     make_dir(tables);
     test_missing_file_reads_nothing();
+    test_store_key_sees_every_bit();
     CHECK(hg_lubricant_load("resources/lubricants/OS265962.txt", &lub, err, sizeof err) == 0);
     id = hg_store_hash(hg_store_id_of("test: Z_exact over T"), &lub, sizeof lub);
     other = hg_store_hash(id, "other", 5);
