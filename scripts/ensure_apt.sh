@@ -2,7 +2,10 @@
 # Installs the Debian/Ubuntu packages named on the command line that are not installed yet
 # (apt-get, with sudo when not root). Idempotent: does nothing when all are present.
 #   ensure_apt.sh [--no-install-recommends] PACKAGE...
+# Everything it prints goes to stderr: callers' stdout carries data (paths that scripts/setup.sh
+# reads from scripts/win64.sh build), which a progress line must not take the place of.
 set -euo pipefail
+exec 1>&2
 opts=()
 if [ "${1:-}" = --no-install-recommends ]; then
   opts+=(--no-install-recommends)
