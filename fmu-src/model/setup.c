@@ -120,7 +120,7 @@ static int phase_table_of_store(hg_phase_table *t, int fl, int lv, void *ctx)
     hg_store_id id = hg_store_hash(hg_store_hash(j->id, &fl, sizeof fl), &lv, sizeof lv);
     j->fl = fl, j->lv = lv;
     held = hg_store_get_shipped(j->resource_dir, id, sizeof *held, build_phase_table, j, NULL);
-    if (!held) return -1; /* out of memory */
+    if (!held) return -1; /* out of memory, or a key collision */
     memcpy(t, held, sizeof *t);
     hg_store_put(held);
     return 0;
@@ -187,7 +187,8 @@ static int load_gearset(hg_setup *s, const char *resource_dir, const hg_vars *v,
                             free_phase_tables, NULL);
     hg_store_put(held); /* after: the same gear set finds the tables it held */
     if (!s->phase) {
-        hg_errorf(err, errlen, "out of memory for the tables of %s", s->gear.name);
+        hg_errorf(err, errlen, "out of memory for the tables of %s (or a table-store key collision)",
+                  s->gear.name);
         return -1;
     }
     return 0;

@@ -15,6 +15,9 @@ static void lock(void) { AcquireSRWLockExclusive(&store_lock); }
 static void unlock(void) { ReleaseSRWLockExclusive(&store_lock); }
 static void wait_built(void) { SleepConditionVariableSRW(&store_built, &store_lock, INFINITE, 0); }
 static void wake_all(void) { WakeAllConditionVariable(&store_built); }
+typedef DWORD thread_id;
+static thread_id this_thread(void) { return GetCurrentThreadId(); }
+static int same_thread(thread_id x, thread_id y) { return x == y; }
 #else
 #include <pthread.h>
 static pthread_mutex_t store_lock = PTHREAD_MUTEX_INITIALIZER;
@@ -23,6 +26,9 @@ static void lock(void) { pthread_mutex_lock(&store_lock); }
 static void unlock(void) { pthread_mutex_unlock(&store_lock); }
 static void wait_built(void) { pthread_cond_wait(&store_built, &store_lock); }
 static void wake_all(void) { pthread_cond_broadcast(&store_built); }
+typedef pthread_t thread_id;
+static thread_id this_thread(void) { return pthread_self(); }
+static int same_thread(thread_id x, thread_id y) { return pthread_equal(x, y); }
 #endif
 
 typedef struct entry {
@@ -30,7 +36,8 @@ typedef struct entry {
     hg_store_id id;
     size_t size;
     int refs;                  /* holders */
-    int building;              /* its build runs (on the thread that asked first) */
+    int building;              /* its build runs, on the thread `builder` that asked first */
+    thread_id builder;
     int shipped;               /* plain bytes, from hg_store_get_shipped */
     unsigned long used;        /* the store's clock when last released */
     hg_store_free_fn free_fn;
@@ -152,13 +159,28 @@ static void take(entry *e)
     if (e->refs++ == 0) store.idle -= e->size;
 }
 
+/* Whether entry e, found under the id asked for, cannot be what was asked for: a key collision
+ * (never seen with the 128-bit keys). Either the entry is being built by this very thread (the
+ * build asks for an id equal to its own, and waiting for it would wait forever) or it holds
+ * another kind of content. */
+static int collides(const entry *e, size_t size, hg_store_free_fn free_fn, int shipped)
+{
+    return (e->building && same_thread(e->builder, this_thread())) || e->size != size ||
+           e->free_fn != free_fn || e->shipped != shipped;
+}
+
 static const void *get(hg_store_id id, size_t size, hg_store_build_fn build, void *ctx,
                        hg_store_free_fn free_fn, int shipped, int *built)
 {
     entry *e;
     if (built) *built = 0;
     lock();
-    while ((e = find(id)) != NULL && e->building) wait_built();
+    while ((e = find(id)) != NULL && e->building && !collides(e, size, free_fn, shipped))
+        wait_built();
+    if (e && collides(e, size, free_fn, shipped)) {
+        unlock();
+        return NULL;
+    }
     if (e) {
         take(e);
         unlock();
@@ -173,6 +195,7 @@ static const void *get(hg_store_id id, size_t size, hg_store_build_fn build, voi
     e->size = size;
     e->refs = 1;
     e->building = 1;
+    e->builder = this_thread();
     e->free_fn = free_fn;
     e->shipped = shipped;
     e->next = store.head;

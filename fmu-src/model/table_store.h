@@ -42,7 +42,9 @@ void hg_store_attach(void);
 void hg_store_detach(void);
 
 /* The entry id, held until hg_store_put: found, or built now by build(table, ctx) (*built set to
- * 1 then, else 0; built may be NULL); NULL when out of memory or the build failed. */
+ * 1 then, else 0; built may be NULL); NULL when out of memory, when the build failed, or when id
+ * collides with another entry's: one this thread is building (a build that asks for its own id
+ * gets NULL rather than waiting for itself), or one of another size, free function or kind. */
 const void *hg_store_get(hg_store_id id, size_t size, hg_store_build_fn build, void *ctx,
                          hg_store_free_fn free_fn, int *built);
 
