@@ -81,7 +81,10 @@ def test_no_module_over_the_line_limit():
 def test_pyproject_lists_every_sub_package_and_the_data():
     setup = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["setuptools"]
     on_disk = {m for p, m in modules() if p.name == "__init__.py"}
-    data = set(setup["package-dir"])
+    data = {f"{package}.{'.'.join(sub.relative_to(ROOT / folder).parts)}".rstrip(".")
+            for package, folder in setup["package-dir"].items()
+            for sub in [ROOT / folder, *(ROOT / folder).rglob("*")]
+            if sub.is_dir() and sub.name != "__pycache__"}
     assert set(setup["packages"]) == on_disk | data
     for package, folder in setup["package-dir"].items():
         assert (ROOT / folder).is_dir() and not (ROOT / folder / "__init__.py").exists(), package
