@@ -50,7 +50,7 @@ from hypoid.cli import args as cliargs
 from hypoid.drivecycle import summary
 from hypoid.drivecycle.cycles import load_cycle
 from hypoid.drivecycle.levels import LEVELS, ZERO_C, choose_level
-from hypoid.drivecycle.run import MASTERS, simulate
+from hypoid.drivecycle.run import MASTERS, check_gear_set, simulate
 from hypoid.drivecycle.vehicle import Vehicle, fmu_parameters, read_vehicle_file, split_set
 from hypoid.paths import user_path
 
@@ -142,6 +142,7 @@ def _scene(args):
     car_set, gear_set = split_set(args.set, known)
     car.fmu.update(car_set)
     extra = cliargs.parse_set(gear_set)
+    check_gear_set(extra)
     cycle = load_cycle(args.cycle)
     if args.master != "fmpy" and (cycle.grade is not None or car.fmu.get("grade", 0.0)):
         raise cliargs.UsageError(f"--master {args.master}: a grade needs the fmpy master (it adds "

@@ -16,7 +16,8 @@ import numpy as np
 from hypoid.cosim import ecos, host, libcosim, master
 from hypoid.drivecycle.levels import LEVELS
 from hypoid.drivecycle.vehicle import Driver, Vehicle, fmu_parameters
-from hypoid.fmu.values import TABLE
+from hypoid.errors import UsageError
+from hypoid.fmu.values import SPEED_KEY, TABLE
 
 GEAR_OUT = ["w_w", "w_p", "T_oil", "P_loss", "P_loss_viscous", "P_churn", "P_bearings",
             "P_seals", "P_axle", "P_in_axle", "eta_axle", "E_in", "E_out", "E_friction",
@@ -36,6 +37,26 @@ class Run:
     C_sump: float            # J/K, the gear FMU's (for the heat balance)
     vehicle: Vehicle = None  # the car as run (air density at this run's air)
     driveline: dict = None   # the gear FMU's inertias, ratio and stiffnesses as initialised
+
+
+# The gear FMU's values that the drive cycle sets itself, with what to give instead; --set of one
+# of them is refused (it would be overwritten, or would break the scene).
+SCENE_SET = {"T_s": "the driver sets it at each step",
+             "v_air": "the car's speed sets it at each step",
+             "T_w": "the vehicle's road load sets it at each step",
+             "load_mode": "the driver's torque drives the axle",
+             "w_set": "the car's speed follows the cycle", "w_p0": "the car starts at rest",
+             SPEED_KEY: "the car's speed follows the cycle",
+             "T_amb": "give --t-amb", "T_oil0": "give --t-oil0 and --warm",
+             "T_bath": "give --t-oil0 and --warm"}
+
+
+def check_gear_set(extra):
+    """Refuses --set values of the gear FMU that the scene sets itself (SCENE_SET)."""
+    for name, value in extra.items():
+        if name in SCENE_SET:
+            raise UsageError(f"--set {name} = {value!r}: set by the drive cycle itself "
+                             f"({SCENE_SET[name]})")
 
 
 def gear_start(level, vehicle, I_w0, T_oil0, T_amb, extra):

@@ -153,6 +153,9 @@ def test_bad_vehicle_files_are_one_line_and_write_nothing(tmp_path, capsys, toml
 @pytest.mark.parametrize("argv, rows, words", [
     (["--set", "m=-5"], CRUISE, ["--set", "m = -5.0", "positive"]),
     (["--set", "coupling=1"], CRUISE, ["coupling", "set by the drive cycle"]),
+    (["--set", "T_s=-500"], CRUISE, ["--set T_s = -500.0", "set by the drive cycle", "driver"]),
+    (["--set", "T_amb=300"], CRUISE, ["T_amb", "set by the drive cycle", "--t-amb"]),
+    (["--set", "speed_rpm=1000"], CRUISE, ["speed_rpm", "set by the drive cycle"]),
     ([], [(0, 0, 0), (10, 20, 31)], ["line 3", "grade 31.0 %", "30 %"]),
     (["--master", "libcosim"], [(0, 0, 0), (10, 20, 3)], ["libcosim", "grade"]),
 ])
