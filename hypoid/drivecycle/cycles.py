@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from hypoid import csvtext
+from hypoid.drivecycle.interp import interp
 from hypoid.errors import UsageError
 from hypoid.paths import user_path
 
@@ -36,12 +37,16 @@ class Cycle:
     source: str
     grade: np.ndarray = field(default=None)  # rise over run at each t (None: level road)
 
+    def __post_init__(self):  # the traces as lists, for interp (called in every step)
+        self._t, self._v = [float(x) for x in self.t], [float(x) for x in self.v]
+        self._grade = None if self.grade is None else [float(x) for x in self.grade]
+
     def speed(self, t):
-        return float(np.interp(t, self.t, self.v))
+        return interp(t, self._t, self._v)
 
     def slope(self, t):
         """The road's grade (rise / run) at t; 0 on a level route."""
-        return 0.0 if self.grade is None else float(np.interp(t, self.t, self.grade))
+        return 0.0 if self._grade is None else interp(t, self._t, self._grade)
 
 
 # name -> (wltp module, function, phase names)

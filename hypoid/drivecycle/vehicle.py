@@ -28,9 +28,8 @@ are refused with one line naming the file, the key and the value."""
 import math
 from dataclasses import dataclass, field
 
-import numpy as np
-
 from hypoid import csvtext
+from hypoid.drivecycle.interp import interp
 from hypoid.errors import UsageError
 
 R_AIR = 287.05           # J/(kg K), dry air (ISO 2533)
@@ -75,7 +74,7 @@ class Engine:
 
     def drag(self, w_p):
         """The engine's drag torque (<= 0) at the propeller-shaft speed w_p (rad/s)."""
-        return float(np.interp(abs(w_p) * 30.0 / math.pi, self.drag_rpm, self.drag_Nm))
+        return interp(abs(w_p) * 30.0 / math.pi, self.drag_rpm, self.drag_Nm)
 
 
 @dataclass
@@ -260,7 +259,7 @@ class Driver:
             self.integral = 0.0
             return 0.0, 300.0  # standing: no drive, brakes held (also against a grade)
         e = v_now - v
-        self.integral = float(np.clip(self.integral + e * h, -2.0, 2.0))
+        self.integral = min(max(self.integral + e * h, -2.0), 2.0)
         a = (v_next - v_now) / h + self.k_p * e + self.k_i * self.integral
         T_wheel = self.J_wheel / r * a + r * veh.road_force(v_now, slope)
         T_s = T_wheel / self.ratio
