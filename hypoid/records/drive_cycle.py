@@ -121,13 +121,16 @@ def cost(record, folder, _old=None):
     spans = ", ".join(f"{k} {v:.0f} s" for k, v in d["cycles"].items()) or \
         f"each cycle's first {d['until_s']:g} s"
     reps = ", ".join(f"{k} {v}" for k, v in d["repeats"].items())
+    single = [k for k, v in d["repeats"].items() if v == 1]
+    if single:
+        reps += f"; the {' and '.join(single)} level's figure is one run"
     loads = " → ".join("/".join(f"{x:.2f}" for x in m[k])
                        for k in ("load_average_before", "load_average_after"))
     text = (f"`{d['command']}`, recorded on {d['commit']}, {d['recorded']}: the gear and vehicle "
             f"FMUs in `hypoid drive-cycle`'s co-simulation (fmpy master, {d['step_s']:g} s "
             f"steps) over {spans}. CPU is the process's (both FMUs and the Python master), the "
-            f"median of the runs of a cell (runs per cell: {reps}; the full level's figure is "
-            "one run); the real-time factor is the cycle's duration over that CPU; the error is "
+            f"median of the runs of a cell (runs per cell: {reps}); the real-time factor is the "
+            "cycle's duration over that CPU; the error is "
             "the axle's cycle loss against the full level's at the same cycle and start. "
             f"Machine: {m['cpus']} CPUs ({m['processor']}), {m['shared']}, niceness "
             f"{m['niceness']}; load average (1/5/15 min) at the start → the end: {loads}; "
