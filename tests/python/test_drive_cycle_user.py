@@ -12,7 +12,7 @@ import pytest
 
 from hypoid import cli
 from hypoid.drivecycle import cycles, run as runner
-from hypoid.drivecycle.vehicle import R_AIR, Engine, air_density
+from hypoid.drivecycle.vehicle import R_AIR, Engine, Vehicle, air_density
 
 KMH = 1 / 3.6
 MILE = 1.609344
@@ -175,3 +175,21 @@ def test_the_progress_bar_is_for_a_terminal_only(monkeypatch):
     monkeypatch.setattr(runner.sys.stderr, "isatty", lambda: False, raising=False)
     monkeypatch.delenv("CI", raising=False)
     assert runner.progress(10.0, "cold").disable
+
+
+# What a user may still choose among the values gear_start sets for the scene: the axle's loss and
+# heat models, the half-shaft's stiffness (the vehicle's k_hs by default) and I_w (added to the
+# car's inertia at the wheel end).
+USER_CHOICES = {"axle_losses", "thermal_model", "k_t2", "I_w"}
+
+
+def test_scene_values_are_refused_and_documented():
+    """Every value gear_start sets for the scene itself is in SCENE_SET (refused by --set) or a
+    user's choice, and docs/axle.md names every refused one."""
+    for level in runner.LEVELS:
+        scene = set(runner.gear_start(level, Vehicle(), 0.0, 293.15, 293.15, {}))
+        scene -= set(runner.LEVELS[level])
+        assert scene - USER_CHOICES <= set(runner.SCENE_SET), (level, scene - USER_CHOICES)
+    docs = (pathlib.Path(__file__).resolve().parents[2] / "docs" / "axle.md").read_text()
+    refused = docs.split("except what the scene sets itself")[1].split("those are refused")[0]
+    assert not [n for n in runner.SCENE_SET if f"`{n}`" not in refused]
