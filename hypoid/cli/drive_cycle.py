@@ -107,6 +107,7 @@ def main(argv):
     args = _parser().parse_args(argv)
     check_args(args)
     gear_fmu, vehicle_fmu, car, extra, cycle = _scene(args)
+    _run_folder(args, cycle)  # refused before the runs, not after them
     T_amb = args.t_amb + ZERO_C
     starts = [("cold", (args.t_oil0 if args.t_oil0 is not None else args.t_amb) + ZERO_C)]
     if not args.no_warm:
@@ -150,15 +151,19 @@ def _scene(args):
     return gear_fmu, vehicle_fmu, car, extra, cycle
 
 
-def _write(args, cycle, runs, text, data):
-    """The run's folder <out>/<name>/, written whole in a temporary folder and then renamed."""
-    name = args.name or f"drive_cycle_{cycle.name}"
-    out = pathlib.Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    final = out / name
+def _run_folder(args, cycle):
+    """The run's folder <out>/<name>/, which must not exist yet."""
+    final = pathlib.Path(args.out) / (args.name or f"drive_cycle_{cycle.name}")
     if final.exists():
         raise cliargs.UsageError(f"{final} exists: give another --name or remove it")
-    tmp = pathlib.Path(tempfile.mkdtemp(dir=out, prefix=f".{name}."))
+    return final
+
+
+def _write(args, cycle, runs, text, data):
+    """The run's folder, written whole in a temporary folder and then renamed."""
+    final = _run_folder(args, cycle)
+    final.parent.mkdir(parents=True, exist_ok=True)
+    tmp = pathlib.Path(tempfile.mkdtemp(dir=final.parent, prefix=f".{final.name}."))
     try:
         (tmp / "summary.json").write_text(json.dumps(data, indent=2) + "\n")
         (tmp / "summary.md").write_text(text)

@@ -193,3 +193,17 @@ def test_scene_values_are_refused_and_documented():
     docs = (pathlib.Path(__file__).resolve().parents[2] / "docs" / "axle.md").read_text()
     refused = docs.split("except what the scene sets itself")[1].split("those are refused")[0]
     assert not [n for n in runner.SCENE_SET if f"`{n}`" not in refused]
+
+
+def test_an_existing_run_folder_is_refused_before_the_runs(tmp_path, capsys, monkeypatch):
+    """Before, the check came after the cycle had run: a full-level cycle took minutes and then
+    exited with nothing written."""
+    (tmp_path / "out" / "run").mkdir(parents=True)
+
+    def no_run(*args, **kwargs):
+        raise AssertionError("simulated although the run folder exists")
+
+    monkeypatch.setattr("hypoid.cli.drive_cycle.simulate", no_run)
+    code, _, _, err = drive(tmp_path, capsys, CRUISE)
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "Traceback" not in err
+    assert str(tmp_path / "out" / "run") in err and "exists" in err and "--name" in err
