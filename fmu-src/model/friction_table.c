@@ -40,6 +40,15 @@ double hg_ft_temperature_on_lattice(double T_bath)
     return 2.0 * HG_FT_T_DRIFT * floor(T_bath * (0.5 / HG_FT_T_DRIFT) + 0.5);
 }
 
+int hg_ft_temperature_nodes(double T_bath, double *T_lo, double *T_hi)
+{
+    double lo = HG_FT_T_NODE_STEP * floor(T_bath / HG_FT_T_NODE_STEP);
+    if (hg_ft_temperature_on_lattice(T_bath) != T_bath || lo == T_bath) return 0;
+    *T_lo = lo;
+    *T_hi = lo + HG_FT_T_NODE_STEP;
+    return 1;
+}
+
 void hg_ft_node_keys(const hg_ft_key *key, double ratio, hg_ft_key *lo, hg_ft_key *hi)
 {
     double x = log(fabs(key->w_p) > HG_FT_SPEED_MIN ? fabs(key->w_p) : HG_FT_SPEED_MIN);
@@ -271,16 +280,49 @@ void hg_friction_table_build(hg_friction_table *t, const hg_friction_config *cfg
     table_finish(t);
 }
 
+/* Cubic Hermite on [x_lo, x_lo + h] at u = (x - x_lo) / h: the weights of the values and slopes
+ * at both ends for the value, and (d..) for the derivative in x. */
+typedef struct {
+    double h00, h10, h01, h11, d00, d10, d11;
+} hermite;
+
+static hermite hermite_at(double u, double h)
+{
+    double u2 = u * u, u3 = u2 * u;
+    hermite w;
+    w.h00 = 2.0 * u3 - 3.0 * u2 + 1.0, w.h10 = (u3 - 2.0 * u2 + u) * h;
+    w.h01 = 3.0 * u2 - 2.0 * u3, w.h11 = (u3 - u2) * h;
+    w.d00 = 6.0 * (u2 - u) / h, w.d10 = 3.0 * u2 - 4.0 * u + 1.0, w.d11 = 3.0 * u2 - 2.0 * u;
+    return w;
+}
+
+static double hermite_value(const hermite *w, double y_a, double s_a, double y_b, double s_b)
+{
+    return w->h00 * y_a + w->h10 * s_a + w->h01 * y_b + w->h11 * s_b;
+}
+
+static double hermite_slope(const hermite *w, double y_a, double s_a, double y_b, double s_b)
+{
+    return w->d00 * (y_a - y_b) + w->d10 * s_a + w->d11 * s_b;
+}
+
+static void table_of(hg_friction_table *t, const hg_friction_table *lo,
+                     const hg_friction_table *hi, const hg_ft_key *key)
+{
+    t->key = *key;
+    t->per_W_max = 1.0 / key->W_max;
+    t->usable = lo->usable && hi->usable;
+    t->built = 1;
+}
+
 /* Entry by entry (ghosts included: they are linear in the nodes, and so is the interpolant). */
 void hg_friction_table_between(hg_friction_table *t, const hg_friction_table *lo,
                                const hg_friction_table *hi, const hg_ft_key *key,
                                int gear_follows)
 {
     double x_lo = log(fabs(lo->key.w_p)), h = log(fabs(hi->key.w_p)) - x_lo;
-    double u = (log(fabs(key->w_p)) - x_lo) / h, u2 = u * u, u3 = u2 * u;
-    double h00 = 2.0 * u3 - 3.0 * u2 + 1.0, h10 = (u3 - 2.0 * u2 + u) * h;
-    double h01 = 3.0 * u2 - 2.0 * u3, h11 = (u3 - u2) * h;
-    double d00 = 6.0 * (u2 - u) / h, d10 = 3.0 * u2 - 4.0 * u + 1.0, d11 = 3.0 * u2 - 2.0 * u;
+    double u = (log(fabs(key->w_p)) - x_lo) / h;
+    hermite hw = hermite_at(u, h);
     double g_lo = lo->key.w_g / lo->key.w_p, g_hi = hi->key.w_g / hi->key.w_p;
     double g = key->w_g / key->w_p, per_w = 1.0 / key->w_p;
     int i, j;
@@ -291,17 +333,35 @@ void hg_friction_table_between(hg_friction_table *t, const hg_friction_table *lo
             /* d ln mu / d ln|w_p| along w_g = g w_p */
             double s_a = lo->key.w_p * (a[HG_FT_CH_WP] + a[HG_FT_CH_WG] * g_lo);
             double s_b = hi->key.w_p * (b[HG_FT_CH_WP] + b[HG_FT_CH_WG] * g_hi);
-            double dL = d00 * (a[HG_FT_CH_L] - b[HG_FT_CH_L]) + d10 * s_a + d11 * s_b;
+            double dL = hermite_slope(&hw, a[HG_FT_CH_L], s_a, b[HG_FT_CH_L], s_b);
             double wg = gear_follows ? 0.0 : (1.0 - u) * a[HG_FT_CH_WG] + u * b[HG_FT_CH_WG];
-            e[HG_FT_CH_L] = h00 * a[HG_FT_CH_L] + h10 * s_a + h01 * b[HG_FT_CH_L] + h11 * s_b;
+            e[HG_FT_CH_L] = hermite_value(&hw, a[HG_FT_CH_L], s_a, b[HG_FT_CH_L], s_b);
             e[HG_FT_CH_WG] = wg;
             e[HG_FT_CH_WP] = dL * per_w - wg * g;
             e[HG_FT_CH_T] = (1.0 - u) * a[HG_FT_CH_T] + u * b[HG_FT_CH_T];
         }
-    t->key = *key;
-    t->per_W_max = 1.0 / key->W_max;
-    t->usable = lo->usable && hi->usable;
-    t->built = 1;
+    table_of(t, lo, hi, key);
+}
+
+void hg_friction_table_between_T(hg_friction_table *t, const hg_friction_table *lo,
+                                 const hg_friction_table *hi, double T_bath)
+{
+    double h = hi->key.T_bath - lo->key.T_bath, u = (T_bath - lo->key.T_bath) / h;
+    hermite hw = hermite_at(u, h);
+    hg_ft_key key = lo->key;
+    int i, j, ch;
+    for (i = 0; i < HG_FT_N_PSI + 3; i++)
+        for (j = 0; j < HG_FT_N_L + 2; j++) {
+            const double *a = lo->c[i][j], *b = hi->c[i][j];
+            double *e = t->c[i][j];
+            for (ch = HG_FT_CH_WP; ch <= HG_FT_CH_WG; ch++) e[ch] = (1.0 - u) * a[ch] + u * b[ch];
+            e[HG_FT_CH_L] = hermite_value(&hw, a[HG_FT_CH_L], a[HG_FT_CH_T], b[HG_FT_CH_L],
+                                          b[HG_FT_CH_T]);
+            e[HG_FT_CH_T] = hermite_slope(&hw, a[HG_FT_CH_L], a[HG_FT_CH_T], b[HG_FT_CH_L],
+                                          b[HG_FT_CH_T]);
+        }
+    key.T_bath = T_bath;
+    table_of(t, lo, hi, &key);
 }
 
 /* Catmull-Rom weights at t in [0, 1] for the nodes -1, 0, 1, 2. */
@@ -547,6 +607,25 @@ static int node(hg_ft_set *s, const hg_friction_config *cfg, const hg_gearset *g
     return 0;
 }
 
+/* The node table of table index i at speed node key k into t: solved at k's temperature, or
+ * between the temperature nodes around it (hg_ft_temperature_nodes), which are solved into
+ * scratch[0] and scratch[1]. 0, or -1 as node. */
+static int speed_node(hg_ft_set *s, const hg_friction_config *cfg, const hg_gearset *g, int i,
+                      const hg_ft_key *k, hg_friction_table *t, hg_friction_table *scratch)
+{
+    hg_ft_key k_T[2];
+    double T[2];
+    int n;
+    if (!hg_ft_temperature_nodes(k->T_bath, &T[0], &T[1])) return node(s, cfg, g, i, k, t);
+    for (n = 0; n < 2; n++) {
+        k_T[n] = *k;
+        k_T[n].T_bath = T[n];
+        if (node(s, cfg, g, i, &k_T[n], &scratch[n])) return -1;
+    }
+    hg_friction_table_between_T(t, &scratch[0], &scratch[1], k->T_bath);
+    return 0;
+}
+
 const hg_friction_table *hg_ft_set_table(hg_ft_set *s, const hg_friction_config *cfg,
                                          const hg_gearset *g, int flank, int level)
 {
@@ -555,10 +634,14 @@ const hg_friction_table *hg_ft_set_table(hg_ft_set *s, const hg_friction_config 
     if (!t && !(t = s->t[i] = calloc(1, sizeof *t))) return NULL;
     if (!t->built || memcmp(&t->key, &s->key, sizeof s->key)) {
         hg_ft_key k_lo, k_hi;
-        hg_friction_table *nodes = malloc(2 * sizeof *nodes); /* the two around the key */
+        double T_lo, T_hi;
+        int between_T = hg_ft_temperature_nodes(s->key.T_bath, &T_lo, &T_hi);
+        /* the two around the key, and two more for the temperature nodes */
+        hg_friction_table *nodes = malloc((between_T ? 4 : 2) * sizeof *nodes);
         int ok;
         hg_ft_node_keys(&s->key, s->ratio, &k_lo, &k_hi);
-        ok = nodes && !node(s, cfg, g, i, &k_lo, &nodes[0]) && !node(s, cfg, g, i, &k_hi, &nodes[1]);
+        ok = nodes && !speed_node(s, cfg, g, i, &k_lo, &nodes[0], &nodes[2]) &&
+             !speed_node(s, cfg, g, i, &k_hi, &nodes[1], &nodes[2]);
         if (ok) hg_friction_table_between(t, &nodes[0], &nodes[1], &s->key, s->gear_follows);
         free(nodes);
         if (!ok) return NULL; /* out of memory: the direct solve */

@@ -108,6 +108,16 @@ double hg_ft_load_range_on_lattice(double W_max);
  * the temperature itself was new at every kelvin. */
 double hg_ft_temperature_on_lattice(double T_bath);
 
+/* Temperature nodes [K]. A key temperature on that lattice (a bath temperature that moved) has
+ * its node tables solved at the multiples of HG_FT_T_NODE_STEP around it and interpolated
+ * between them (hg_friction_table_between_T), so an oil that warms through a drive cycle
+ * solves the node tables of every speed and load range it meets once per HG_FT_T_NODE_STEP
+ * instead of at every key; a key on a node, or off the lattice (the first key, at the bath
+ * temperature itself), is solved there. 1 and the nodes T_lo < T_bath < T_hi = T_lo +
+ * HG_FT_T_NODE_STEP when T_bath lies between nodes, else 0. */
+#define HG_FT_T_NODE_STEP 8.0
+int hg_ft_temperature_nodes(double T_bath, double *T_lo, double *T_hi);
+
 /* Beyond this friction coefficient (parameters far outside physics, e.g. a vanishing k_f) the
  * table is not used: the direct solve runs, and fails as it would without the table. */
 #define HG_FT_MU_MAX 10.0
@@ -148,6 +158,13 @@ void hg_friction_table_between(hg_friction_table *t, const hg_friction_table *lo
                                const hg_friction_table *hi, const hg_ft_key *key,
                                int gear_follows);
 
+/* The table at bath temperature T_bath between the tables lo and hi of the temperature nodes
+ * around it (keys alike but for their temperatures): cubic Hermite in T of ln mu from the
+ * nodes' values and temperature derivatives, its derivative there the table's temperature
+ * derivative; the speed derivatives interpolated linearly. */
+void hg_friction_table_between_T(hg_friction_table *t, const hg_friction_table *lo,
+                                 const hg_friction_table *hi, double T_bath);
+
 /* The keys of the node tables around key's pinion speed (|w_p| >= HG_FT_SPEED_MIN): node speeds
  * with w_p's sign, w_g = w_p / ratio, key's temperature and load range. */
 void hg_ft_node_keys(const hg_ft_key *key, double ratio, hg_ft_key *lo, hg_ft_key *hi);
@@ -174,7 +191,7 @@ void hg_friction_table_pairs_blend(const hg_friction_table *lo, const hg_frictio
 
 /* The tables of every flank and torque level of a gear set, t[flank * n_levels + level], for one
  * key: a table is made when first asked for under the key (hg_ft_set_table) between the node
- * tables around the key's speed, which come from the process's table store (model/table_store.h:
+ * tables around the key's speed (and temperature: hg_ft_temperature_nodes), which come from the process's table store (model/table_store.h:
  * solved by the first instance that needs them, kept while the store has room), so a run builds
  * only the levels its torque reaches, and levels whose contact series are the same
  * (hg_gearset_same_contact: the friction at a pair load depends on the contact alone) share one.

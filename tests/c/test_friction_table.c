@@ -260,6 +260,74 @@ static void test_columns_shared(const hg_friction_config *cfg, const hg_gearset 
     hg_ft_set_free(&set);
 }
 
+/* Worst |ln mu| difference of two tables over their nodes (ghosts left out). */
+static double worst_ln_mu_difference(const hg_friction_table *a, const hg_friction_table *b)
+{
+    double worst = 0.0;
+    int i, j;
+    for (i = 1; i <= HG_FT_N_PSI; i++)
+        for (j = 1; j <= HG_FT_N_L; j++)
+            worst = fmax(worst, fabs(a->c[i][j][HG_FT_CH_L] - b->c[i][j][HG_FT_CH_L]));
+    return worst;
+}
+
+/* Temperature nodes: a key on the temperature lattice between multiples of HG_FT_T_NODE_STEP is
+ * interpolated between the node tables there, a key on a node or off the lattice (the first
+ * key, at the bath temperature itself) is not. The interpolant at the middle of two nodes, the
+ * farthest from both, against the table solved at its temperature: ln mu within 1e-4 at the
+ * design point and slow and cold (the tables' own error against the direct solve is 1.5e-3),
+ * and a set's table there is the speed interpolation of the temperature interpolations of the
+ * node tables, solved at the two node temperatures only. */
+static void test_temperature_nodes(const hg_friction_config *cfg, const hg_gearset *g)
+{
+    static hg_friction_table lo, hi, between, solved, speed_lo, speed_hi;
+    static hg_ft_set set;
+    const double mid = 0.5 * HG_FT_T_NODE_STEP, at[2][2] = {{2000.0, 312.0}, {500.0, 248.0}};
+    double T_lo = 0.0, T_hi = 0.0, ratio = (double)g->N_g / g->N_p;
+    hg_ft_key key, k, k_lo, k_hi;
+    const hg_friction_table *t;
+    int n, s;
+    CHECK(hg_ft_temperature_nodes(316.0, &T_lo, &T_hi) && T_lo == 312.0 && T_hi == 320.0);
+    CHECK(hg_ft_temperature_nodes(250.0, &T_lo, &T_hi) && T_lo == 248.0 && T_hi == 256.0);
+    CHECK(!hg_ft_temperature_nodes(320.0, &T_lo, &T_hi)); /* a node */
+    CHECK(!hg_ft_temperature_nodes(313.15, &T_lo, &T_hi)); /* off the lattice */
+    CHECK(!hg_ft_temperature_nodes(315.0, &T_lo, &T_hi));
+    for (n = 0; n < 2; n++) {
+        double w_p = at[n][0] * RPM, T = at[n][1] + mid, worst;
+        hg_ft_key_for(w_p, ratio, T, 2000.0, &key);
+        key.W_max = 4000.0;
+        k = key;
+        k.T_bath = at[n][1];
+        hg_friction_table_build(&lo, cfg, g, HG_FLANK_DRIVE, 0, &k, 0);
+        k.T_bath = at[n][1] + HG_FT_T_NODE_STEP;
+        hg_friction_table_build(&hi, cfg, g, HG_FLANK_DRIVE, 0, &k, 0);
+        hg_friction_table_build(&solved, cfg, g, HG_FLANK_DRIVE, 0, &key, 0);
+        hg_friction_table_between_T(&between, &lo, &hi, T);
+        worst = worst_ln_mu_difference(&between, &solved);
+        printf("temperature nodes %.0f and %.0f K at %.0f rpm: ln mu between them within %.1e "
+               "of the table solved at %.0f K\n", at[n][1], at[n][1] + HG_FT_T_NODE_STEP,
+               at[n][0], worst, T);
+        CHECK(worst < 1e-4 && between.key.T_bath == T && between.built);
+    }
+    /* the set: four node tables (two speeds, two temperatures), 2 x 2 x 21 columns solved */
+    hg_ft_set_alloc(&set, cfg, g, 0);
+    set.key = key;
+    set.keyed = 1;
+    hg_ft_node_keys(&key, ratio, &k_lo, &k_hi);
+    for (s = 0; s < 2; s++) {
+        hg_ft_key ks = s ? k_hi : k_lo;
+        ks.T_bath = at[1][1];
+        hg_friction_table_build(&lo, cfg, g, HG_FLANK_DRIVE, 0, &ks, 0);
+        ks.T_bath = at[1][1] + HG_FT_T_NODE_STEP;
+        hg_friction_table_build(&hi, cfg, g, HG_FLANK_DRIVE, 0, &ks, 0);
+        hg_friction_table_between_T(s ? &speed_hi : &speed_lo, &lo, &hi, key.T_bath);
+    }
+    hg_friction_table_between(&between, &speed_lo, &speed_hi, &key, 0);
+    t = hg_ft_set_table(&set, cfg, g, HG_FLANK_DRIVE, 0);
+    CHECK(t && !memcmp(t->c, between.c, sizeof between.c) && set.solved == 4 * HG_FT_N_L);
+    hg_ft_set_free(&set);
+}
+
 /* hg_ft_temperature_on_lattice: an even number of kelvin, within HG_FT_T_DRIFT of the
  * temperature, so a key moved onto it as friction_table_policy.c does still covers the
  * temperature that moved it, from -60 to 200 degC; an oil warming from 20 to 60 degC and cooling
@@ -413,6 +481,7 @@ int main(void)
             if (k == 0 && thermal) test_drift_held(&cfg, &g);
             if (k == 0 && thermal) test_pairs_at_once(&cfg, &g);
             if (k == 0 && thermal) test_columns_shared(&cfg, &g);
+            if (k == 0 && thermal) test_temperature_nodes(&cfg, &g);
             for (rigid = 0; rigid < 4; rigid++) { /* rigid & 1: the gear speed follows; & 2:
                                                       between the node tables, as the model */
                 int gf = rigid & 1, nodes = rigid >> 1;
@@ -427,6 +496,13 @@ int main(void)
                  * the design point; the isothermal shear, exponential in the pressure, a little
                  * more */
                 CHECK(fmax(e1, fmax(e2, e3)) < (thermal ? 1.5e-3 : 2.5e-3));
+                if (nodes) { /* keys on the temperature lattice between temperature nodes */
+                    e1 = worst_error(&cfg, &g, 2000.0, 316.0, 4760.0, gf, nodes);
+                    e2 = worst_error(&cfg, &g, 500.0, 252.0, 9000.0, gf, nodes);
+                    e3 = worst_error(&cfg, &g, 4000.0, 372.0, 1500.0, gf, nodes);
+                    printf("  between temperature nodes: %.2e / %.2e / %.2e\n", e1, e2, e3);
+                    CHECK(fmax(e1, fmax(e2, e3)) < (thermal ? 1.5e-3 : 2.5e-3));
+                }
             }
         }
     test_layered(&cfg, &oil[0]);
