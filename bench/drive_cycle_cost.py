@@ -20,7 +20,6 @@ import datetime
 import json
 import os
 import pathlib
-import platform
 import resource
 import statistics
 import sys
@@ -31,6 +30,7 @@ sys.path.insert(0, str(ROOT))
 
 from hypoid.drivecycle import cycles, levels, summary  # noqa: E402
 from hypoid.drivecycle import run as runner  # noqa: E402
+from hypoid.records import machine  # noqa: E402
 from hypoid.records.docblocks import commit  # noqa: E402
 from hypoid.records.registry import FOLDER, RECORDS  # noqa: E402
 
@@ -126,8 +126,7 @@ def main():
            "cycles": {c: float(cycles.load_cycle(c).t[-1] - cycles.load_cycle(c).t[0])
                       for c in args.cycles} if not args.until else {},
            "until_s": args.until, "step_s": args.step, "repeats": repeats,
-           "machine": {"cpus": os.cpu_count(), "processor": platform.processor() or
-                       platform.machine(), "niceness": os.nice(0),
+           "machine": {"cpus": os.cpu_count(), "processor": machine.processor(), "niceness": os.nice(0),
                        "load_average_before": list(load0),
                        "load_average_after": list(os.getloadavg()),
                        "shared": "2 cores shared with other jobs"},

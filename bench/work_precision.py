@@ -28,6 +28,7 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import wp_driver as W  # noqa: E402
 
 from hypoid import data  # noqa: E402
+from hypoid.records import machine  # noqa: E402
 from hypoid.records.registry import FOLDER, RECORDS  # noqa: E402
 from hypoid.records.work_precision import LEVEL_TITLES, read_csv  # noqa: E402
 
@@ -184,7 +185,7 @@ def run_all(args):
     fmu = W.Fmu(args.fmu)
     meta = dict(fmu=str(args.fmu), fmu_mtime=time.ctime(os.path.getmtime(args.fmu)),
                 host=platform.node(), python=platform.python_version(),
-                cpu=platform.processor() or platform.machine(), quick=args.quick,
+                cpu=machine.processor(), quick=args.quick,
                 started=time.ctime())
     settings = QUICK_SETTINGS if args.quick else FULL_SETTINGS
     repeats = 1 if args.quick else 3

@@ -96,3 +96,16 @@ def test_mesh_law_record_says_what_physics_claims():
         dev = {k: max(abs(r["pp_um"] / q - 1.0) for r, q in zip(d["runs"][k], ref))
                for k in ("fmu", "secant")}
         assert dev["fmu"] < 0.05 and dev["secant"] > 0.5, dev
+
+
+def test_records_name_the_processor(tmp_path):
+    """Real-time factors differ between processors by tens of per cent: a record names the
+    model, not the architecture platform.processor() gives on Linux ('x86_64' or '')."""
+    from hypoid.records import machine
+    info = tmp_path / "cpuinfo"
+    info.write_text("processor\t: 0\nvendor_id\t: GenuineIntel\n"
+                    "model name\t: Intel(R) Xeon(R) Processor\n\nprocessor\t: 1\n")
+    assert machine.processor(info) == "Intel(R) Xeon(R) Processor"
+    assert machine.processor(tmp_path / "absent")  # platform's answer, never empty
+    info.write_text("processor\t: 0\n")
+    assert machine.processor(info) == machine.processor(tmp_path / "absent")
