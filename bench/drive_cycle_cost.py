@@ -9,6 +9,14 @@ table.
 
   nice .venv/bin/python bench/drive_cycle_cost.py                      # the record (~20 min)
   .venv/bin/python bench/drive_cycle_cost.py --until 20 --json /tmp/c.json   # a quick look
+  .venv/bin/python bench/drive_cycle_cost.py --against OTHER.fmu --levels full --cycles wltc3 \
+      --starts "cold 20" --json /tmp/ab.json       # this build against another, in one run
+
+--against compares two builds of the gear FMU (--fmu and OTHER) in one run: each cell runs them
+in turn (a b, b a, a b, ...), so that both meet the same machine, and reports their median CPU,
+the ratio of the medians and the change of the axle's cycle loss. On a shared machine whose speed
+drifts by tens of per cent between hours, that ratio is the evidence a change needs; it writes
+no record.
 
 Starts: "cold" at the air's temperature (-7 and 20 degC), "warm" with the oil at 80 degC in air
 at 20 degC (as `hypoid drive-cycle`'s warm run). --heavy-input adds the first cycle's cold 20 degC
@@ -45,11 +53,11 @@ def cpu_seconds():
     return r.ru_utime + r.ru_stime
 
 
-def once(cycle, level, start, sets, args):
-    """One run: CPU, wall and what it gave."""
+def once(cycle, level, start, sets, args, fmu=None):
+    """One run (of the gear FMU `fmu`, else --fmu): CPU, wall and what it gave."""
     T_oil0, T_amb = STARTS[start]
     load, wall, cpu = os.getloadavg()[0], time.perf_counter(), cpu_seconds()
-    r = runner.simulate(cycle, args.fmu, args.vehicle_fmu, level, T_oil0 + levels.ZERO_C,
+    r = runner.simulate(cycle, fmu or args.fmu, args.vehicle_fmu, level, T_oil0 + levels.ZERO_C,
                         T_amb + levels.ZERO_C, args.step, dict(sets), f"{level} {start}")
     wall, cpu = time.perf_counter() - wall, cpu_seconds() - cpu
     s = summary.summarise(r, cycle, args.step)
@@ -76,6 +84,42 @@ def cell(cycle, level, start, repeats, args, sets=None):
     print(f"{cycle.name:<8} {start:<8} {level:<5} {sets or ''} {cpu:8.2f} s CPU {span / cpu:8.1f}x "
           f"{out['axle_loss_J'] / 1e3:9.2f} kJ (load {each[0]['load_before']:.2f})", flush=True)
     return out
+
+
+def ab_cell(cycle, level, start, repeats, args):
+    """A level at a cycle and start with --fmu ("this") and --against, their runs in turn and
+    the order swapped at every repeat: the median CPU of each, this over against, and the
+    change of the axle's cycle loss."""
+    builds = [("this", args.fmu), ("against", args.against)]
+    each = {name: [] for name, _ in builds}
+    for k in range(repeats):
+        for name, fmu in builds[::-1] if k % 2 else builds:
+            each[name].append(once(cycle, level, start, {}, args, fmu))
+    cpu = {name: statistics.median(e["cpu_s"] for e in runs) for name, runs in each.items()}
+    loss = {name: runs[0]["axle_loss_J"] for name, runs in each.items()}
+    out = {"cycle": cycle.name, "start": start, "level": level, "repeats": repeats,
+           "cpu_s": cpu, "cpu_ratio": cpu["this"] / cpu["against"], "axle_loss_J": loss,
+           "loss_change": loss["this"] / loss["against"] - 1.0, "each": each}
+    print(f"{cycle.name:<8} {start:<8} {level:<5} {cpu['this']:8.2f} s CPU against "
+          f"{cpu['against']:8.2f} s: {out['cpu_ratio']:.3f}, axle loss "
+          f"{100 * out['loss_change']:+.3f} %", flush=True)
+    return out
+
+
+def against(args, repeats):
+    """--against: the two builds cell by cell; the data to --json if given."""
+    cells = []
+    for name in args.cycles:
+        cycle = cycles.load_cycle(name)
+        cycle = shortened(cycle, args.until) if args.until else cycle
+        cells += [ab_cell(cycle, level, start, repeats[level], args)
+                  for start in args.starts for level in args.levels]
+    if args.json:
+        out = {"command": "python " + " ".join(["bench/drive_cycle_cost.py", *sys.argv[1:]]),
+               "this": args.fmu, "against": args.against, "commit": commit(ROOT),
+               "processor": machine.processor(), "cells": cells}
+        args.json.write_text(json.dumps(out, indent=2) + "\n")
+        print(f"drive_cycle_cost: wrote {args.json}")
 
 
 def errors(cells):
@@ -105,11 +149,17 @@ def main():
     ap.add_argument("--step", type=float, default=0.05)
     ap.add_argument("--fmu", default=str(ROOT / "build" / "HypoidGearPair.fmu"))
     ap.add_argument("--vehicle-fmu", default=str(ROOT / "build" / "LongitudinalVehicle.fmu"))
-    ap.add_argument("--json", type=pathlib.Path, default=DATA, help="where the data go")
+    ap.add_argument("--json", type=pathlib.Path,
+                    help="where the data go (default: the record's, or none with --against)")
+    ap.add_argument("--against", metavar="FMU",
+                    help="another build of the gear FMU to compare --fmu with in this run")
     ap.add_argument("--heavy-input", action=argparse.BooleanOptionalAction, default=True,
                     help=f"the first cycle's cold 20 start with {HEAVY_INPUT} (map, fast)")
     args = ap.parse_args()
     repeats = dict(zip(REPEATS, args.repeats))
+    if args.against:
+        return against(args, repeats)
+    args.json = args.json or DATA
     began, load0, t0 = datetime.datetime.now(datetime.timezone.utc), os.getloadavg(), time.time()
     cells = []
     for k, name in enumerate(args.cycles):
@@ -126,7 +176,8 @@ def main():
            "cycles": {c: float(cycles.load_cycle(c).t[-1] - cycles.load_cycle(c).t[0])
                       for c in args.cycles} if not args.until else {},
            "until_s": args.until, "step_s": args.step, "repeats": repeats,
-           "machine": {"cpus": os.cpu_count(), "processor": machine.processor(), "niceness": os.nice(0),
+           "machine": {"cpus": os.cpu_count(), "processor": machine.processor(),
+                       "niceness": os.nice(0),
                        "load_average_before": list(load0),
                        "load_average_after": list(os.getloadavg()),
                        "shared": "2 cores shared with other jobs"},

@@ -469,3 +469,21 @@ def test_a_launch_torque_beyond_the_gears_range_stops_the_default_master(tmp_pat
     assert code == 2 and len(err.splitlines()) == 1, err
     assert "T_s" in err and "unexpected" not in err
     assert not (tmp_path / "heavy").exists()
+
+
+def test_the_cost_bench_compares_two_builds_in_one_run(fmu_path, tmp_path):
+    """bench/drive_cycle_cost.py --against: both builds run each repeat, their medians and ratio
+    are written, and the same build against itself loses the same energy to the bit."""
+    import subprocess
+    import sys
+    out = tmp_path / "ab.json"
+    subprocess.run([sys.executable, str(ROOT / "bench" / "drive_cycle_cost.py"), "--fmu",
+                    str(fmu_path), "--against", str(fmu_path), "--levels", "map", "--cycles",
+                    "wltc3", "--starts", "cold 20", "--until", "60", "--repeats", "3", "1", "1",
+                    "--json", str(out)], check=True, capture_output=True, text=True)
+    d = json.loads(out.read_text())
+    (c,) = d["cells"]
+    assert c["level"] == "map" and c["repeats"] == 3 and d["processor"]
+    assert [len(c["each"][k]) for k in ("this", "against")] == [3, 3]
+    assert c["loss_change"] == 0.0 and c["axle_loss_J"]["this"] > 0.0
+    assert c["cpu_ratio"] == pytest.approx(c["cpu_s"]["this"] / c["cpu_s"]["against"])
