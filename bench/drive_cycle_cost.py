@@ -158,6 +158,8 @@ def main():
     args = ap.parse_args()
     repeats = dict(zip(REPEATS, args.repeats))
     if args.against:
+        if not pathlib.Path(args.against).is_file():
+            ap.error(f"--against {args.against}: no such FMU")
         return against(args, repeats)
     args.json = args.json or DATA
     began, load0, t0 = datetime.datetime.now(datetime.timezone.utc), os.getloadavg(), time.time()

@@ -607,20 +607,19 @@ static int node(hg_ft_set *s, const hg_friction_config *cfg, const hg_gearset *g
     return 0;
 }
 
-/* The node table of table index i at speed node key k into t: solved at k's temperature, or
- * between the temperature nodes around it (hg_ft_temperature_nodes), which are solved into
- * scratch[0] and scratch[1]. 0, or -1 as node. */
+/* The node table of table index i at speed node key k into t: solved at k's temperature, or,
+ * when T_node holds the temperature nodes around it (hg_ft_temperature_nodes), between their
+ * node tables, solved into scratch[0] and scratch[1]. 0, or -1 as node. */
 static int speed_node(hg_ft_set *s, const hg_friction_config *cfg, const hg_gearset *g, int i,
-                      const hg_ft_key *k, hg_friction_table *t, hg_friction_table *scratch)
+                      const hg_ft_key *k, const double *T_node, hg_friction_table *t,
+                      hg_friction_table *scratch)
 {
-    hg_ft_key k_T[2];
-    double T[2];
     int n;
-    if (!hg_ft_temperature_nodes(k->T_bath, &T[0], &T[1])) return node(s, cfg, g, i, k, t);
+    if (!T_node) return node(s, cfg, g, i, k, t);
     for (n = 0; n < 2; n++) {
-        k_T[n] = *k;
-        k_T[n].T_bath = T[n];
-        if (node(s, cfg, g, i, &k_T[n], &scratch[n])) return -1;
+        hg_ft_key k_T = *k;
+        k_T.T_bath = T_node[n];
+        if (node(s, cfg, g, i, &k_T, &scratch[n])) return -1;
     }
     hg_friction_table_between_T(t, &scratch[0], &scratch[1], k->T_bath);
     return 0;
@@ -634,14 +633,14 @@ const hg_friction_table *hg_ft_set_table(hg_ft_set *s, const hg_friction_config 
     if (!t && !(t = s->t[i] = calloc(1, sizeof *t))) return NULL;
     if (!t->built || memcmp(&t->key, &s->key, sizeof s->key)) {
         hg_ft_key k_lo, k_hi;
-        double T_lo, T_hi;
-        int between_T = hg_ft_temperature_nodes(s->key.T_bath, &T_lo, &T_hi);
+        double T[2];
+        const double *T_node = hg_ft_temperature_nodes(s->key.T_bath, &T[0], &T[1]) ? T : NULL;
         /* the two around the key, and two more for the temperature nodes */
-        hg_friction_table *nodes = malloc((between_T ? 4 : 2) * sizeof *nodes);
+        hg_friction_table *nodes = malloc((T_node ? 4 : 2) * sizeof *nodes);
         int ok;
         hg_ft_node_keys(&s->key, s->ratio, &k_lo, &k_hi);
-        ok = nodes && !speed_node(s, cfg, g, i, &k_lo, &nodes[0], &nodes[2]) &&
-             !speed_node(s, cfg, g, i, &k_hi, &nodes[1], &nodes[2]);
+        ok = nodes && !speed_node(s, cfg, g, i, &k_lo, T_node, &nodes[0], &nodes[2]) &&
+             !speed_node(s, cfg, g, i, &k_hi, T_node, &nodes[1], &nodes[2]);
         if (ok) hg_friction_table_between(t, &nodes[0], &nodes[1], &s->key, s->gear_follows);
         free(nodes);
         if (!ok) return NULL; /* out of memory: the direct solve */

@@ -191,8 +191,8 @@ void hg_friction_table_pairs_blend(const hg_friction_table *lo, const hg_frictio
 
 /* The tables of every flank and torque level of a gear set, t[flank * n_levels + level], for one
  * key: a table is made when first asked for under the key (hg_ft_set_table) between the node
- * tables around the key's speed (and temperature: hg_ft_temperature_nodes), which come from the process's table store (model/table_store.h:
- * solved by the first instance that needs them, kept while the store has room), so a run builds
+ * tables around the key's speed (and temperature: hg_ft_temperature_nodes), which come from the
+ * process's table store (model/table_store.h: solved by the first instance that needs them, kept while the store has room), so a run builds
  * only the levels its torque reaches, and levels whose contact series are the same
  * (hg_gearset_same_contact: the friction at a pair load depends on the contact alone) share one.
  * What a table holds depends on the key, flank and level alone, so when and from which stored
